@@ -1,0 +1,47 @@
+#pragma once
+/// @file config.hpp
+/// Scalar types, the vector type, and the numeric limits every shape and query obeys.
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <concepts>
+#include <limits>
+
+namespace collide {
+
+/// The two supported scalars: float (what games use) and double (large worlds).
+template <class T>
+concept Scalar = std::same_as<T, float> || std::same_as<T, double>;
+
+/// A 2D vector of scalar T (Eigen fixed-size column vector).
+template <Scalar T>
+using Vec2 = Eigen::Matrix<T, 2, 1>;
+
+/// Queries compute in double whatever the stored scalar: float inputs convert exactly, and the
+/// product of two floats is exact in double, so float shapes lose nothing before the first sum.
+using Calc = double;
+using Vec2c = Eigen::Matrix<Calc, 2, 1>;
+
+/// Largest magnitude a stored value may have; larger values are rejected with Error::OutOfRange.
+/// float: 2^125 (about 4.25e37), so that a bounding box (center + extents) still fits in a float.
+/// double: 2^500 (about 3.3e150), so that squares of values and of their differences cannot
+/// overflow the computation type.
+template <Scalar T>
+constexpr T max_magnitude() noexcept {
+  if constexpr (std::same_as<T, float>) {
+    return 0x1p+125f;
+  } else {
+    return 0x1p+500;
+  }
+}
+
+/// Absolute floor of every error bound (about 3.1e-151). Double values below 2^-500 may square to
+/// zero; answers at that scale are only as good as this floor.
+inline constexpr Calc kAbsoluteFloor = 0x1p-500;
+
+/// Relative factor of the overlap error bound, in units of double's unit roundoff (2^-53).
+/// See overlap_tolerance() in queries.hpp.
+inline constexpr Calc kOverlapErrorFactor = 64.0;
+
+}  // namespace collide

@@ -1,0 +1,302 @@
+#pragma once
+/// @file detail/core.hpp
+/// Every primitive is a convex core (a point, a segment or a convex polygon) dilated by a radius:
+/// circle = point + r, capsule = segment + r, AABB / OBB / polygon = polygon + 0. The generic
+/// algorithms here work on cores in the computation type (double).
+
+#include "collide/compound.hpp"
+#include "collide/predicates.hpp"
+#include "collide/shapes.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace collide::detail {
+
+/// A convex core: 1 point, 2 distinct points (segment) or n >= 3 counter-clockwise vertices.
+class Core {
+ public:
+  Core() = default;
+  void push(const Vec2c& p) {
+    if (n_ < small_.size()) {
+      small_[n_] = p;
+    } else {
+      if (big_.empty()) big_.assign(small_.begin(), small_.end());
+      big_.push_back(p);
+    }
+    ++n_;
+  }
+  std::span<const Vec2c> pts() const noexcept {
+    return {n_ > small_.size() ? big_.data() : small_.data(), n_};
+  }
+  std::size_t size() const noexcept { return n_; }
+  const Vec2c& operator[](std::size_t i) const noexcept { return pts()[i]; }
+  Calc radius = 0;
+
+  /// Collapses a box core whose corners coincide (zero extent) to a segment or a point.
+  void dedupe() {
+    std::array<Vec2c, 4> keep{};
+    std::size_t k = 0;
+    for (const Vec2c& p : pts()) {
+      bool seen = false;
+      for (std::size_t i = 0; i < k; ++i) seen = seen || keep[i] == p;
+      if (!seen && k < 4) keep[k++] = p;
+    }
+    if (k == n_ || k == 0) return;
+    if (k == 3) {
+      // Three distinct corners of a rectangle cannot arise; keep the two farthest as a segment.
+      k = 2;
+    }
+    n_ = 0;
+    big_.clear();
+    for (std::size_t i = 0; i < k; ++i) push(keep[i]);
+  }
+
+ private:
+  std::array<Vec2c, 8> small_{};
+  std::vector<Vec2c> big_;
+  std::size_t n_ = 0;
+};
+
+template <Scalar T>
+Core core_of(const Circle<T>& s) {
+  Core c;
+  c.push(widen(s.center()));
+  c.radius = s.radius();
+  return c;
+}
+template <Scalar T>
+Core core_of(const Capsule<T>& s) {
+  Core c;
+  c.push(widen(s.a()));
+  if (s.b() != s.a()) c.push(widen(s.b()));
+  c.radius = s.radius();
+  return c;
+}
+template <Scalar T>
+Core core_of(const Aabb<T>& s) {
+  const Vec2c lo = widen(s.min()), hi = widen(s.max());
+  Core c;
+  c.push(lo);
+  c.push({hi.x(), lo.y()});
+  c.push(hi);
+  c.push({lo.x(), hi.y()});
+  if (lo.x() == hi.x() || lo.y() == hi.y()) {
+    // Degenerate box: a vertical or horizontal segment, or a point.
+    Core d;
+    d.push(lo);
+    if (hi != lo) d.push(hi);
+    return d;
+  }
+  return c;
+}
+/// OBB corners center +- hx u +- hy v, computed in double (exact products for float input;
+/// error at most a few units of roundoff of the largest coordinate).
+template <Scalar T>
+Core core_of(const Obb<T>& s) {
+  const Vec2c c = widen(s.center()), u = widen(s.axis());
+  const Vec2c v = perp(u);
+  const Vec2c ex = u * Calc(s.half_extents().x()), ey = v * Calc(s.half_extents().y());
+  Core k;
+  if (s.half_extents().x() == 0 || s.half_extents().y() == 0) {
+    const Vec2c p0 = c - ex - ey, p1 = c + ex + ey;
+    k.push(p0);
+    if (p1 != p0) k.push(p1);
+    return k;
+  }
+  k.push(c - ex - ey);
+  k.push(c + ex - ey);
+  k.push(c + ex + ey);
+  k.push(c - ex + ey);
+  return k;
+}
+template <Scalar T>
+Core core_of(const ConvexPolygon<T>& s) {
+  Core c;
+  for (const Vec2<T>& p : s.vertices()) c.push(widen(p));
+  return c;
+}
+
+/// Largest absolute coordinate of a shape's bounding box: the scale of its rounding errors.
+template <Scalar T>
+Calc scale_of(const Aabb<T>& b) noexcept {
+  return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact intersection of cores (closed sets). Every decision is an orient() sign or a comparison.
+
+inline bool in_box_of(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
+         std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+}
+
+inline bool point_on_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
+  return orient(a, b, p) == 0 && in_box_of(p, a, b);
+}
+
+/// Closed segments [a, b] and [c, d] share a point.
+inline bool segments_intersect(const Vec2c& a, const Vec2c& b, const Vec2c& c, const Vec2c& d) noexcept {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && in_box_of(c, a, b)) || (o2 == 0 && in_box_of(d, a, b)) ||
+         (o3 == 0 && in_box_of(a, c, d)) || (o4 == 0 && in_box_of(b, c, d));
+}
+
+/// p inside or on the boundary of a counter-clockwise convex polygon.
+inline bool point_in_polygon(const Vec2c& p, std::span<const Vec2c> poly) noexcept {
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orient(poly[i], poly[(i + 1) % n], p) < 0) return false;
+  }
+  return true;
+}
+
+/// Some edge of `poly` has every point of `other` strictly outside it.
+inline bool has_separating_edge(std::span<const Vec2c> poly, std::span<const Vec2c> other) noexcept {
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2c& a = poly[i];
+    const Vec2c& b = poly[(i + 1) % n];
+    bool all_out = true;
+    for (const Vec2c& q : other) {
+      if (orient(a, b, q) >= 0) {
+        all_out = false;
+        break;
+      }
+    }
+    if (all_out) return true;
+  }
+  return false;
+}
+
+/// The cores (without radius) share a point. Exact.
+inline bool cores_intersect(const Core& p, const Core& q) noexcept {
+  const Core& s = p.size() <= q.size() ? p : q;  // smaller first
+  const Core& l = p.size() <= q.size() ? q : p;
+  if (s.size() == 1) {
+    if (l.size() == 1) return s[0] == l[0];
+    if (l.size() == 2) return point_on_segment(s[0], l[0], l[1]);
+    return point_in_polygon(s[0], l.pts());
+  }
+  if (s.size() == 2) {
+    if (l.size() == 2) return segments_intersect(s[0], s[1], l[0], l[1]);
+    if (point_in_polygon(s[0], l.pts())) return true;
+    const std::size_t n = l.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (segments_intersect(s[0], s[1], l[i], l[(i + 1) % n])) return true;
+    }
+    return false;
+  }
+  // Separating axis theorem: convex polygons are disjoint iff an edge of one has the other
+  // strictly outside it.
+  return !has_separating_edge(s.pts(), l.pts()) && !has_separating_edge(l.pts(), s.pts());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Distances between cores (rounded; used where the cores do not intersect).
+
+struct Closest {
+  Calc dist2 = std::numeric_limits<Calc>::infinity();
+  Vec2c on_p = Vec2c::Zero();  ///< closest point of the first core
+  Vec2c on_q = Vec2c::Zero();  ///< closest point of the second core
+};
+
+/// Closest point to p on segment [a, b].
+inline Vec2c closest_on_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
+  const Vec2c d = b - a;
+  const Calc dd = d.squaredNorm();
+  if (!(dd > 0)) return a;
+  const Calc t = std::clamp((p - a).dot(d) / dd, Calc(0), Calc(1));
+  return a + d * t;
+}
+
+inline void consider(Closest& best, const Vec2c& on_p, const Vec2c& on_q) noexcept {
+  const Calc d2 = (on_q - on_p).squaredNorm();
+  if (d2 < best.dist2) best = {d2, on_p, on_q};
+}
+
+/// Closest points between two cores' boundaries; exact only up to rounding. Meaningful when the
+/// cores do not intersect (then the closest pair involves a vertex of one of them).
+inline Closest closest_points(const Core& p, const Core& q) noexcept {
+  Closest best;
+  auto vertex_vs = [&best](std::span<const Vec2c> pts, std::span<const Vec2c> edges, bool swap) {
+    const std::size_t n = edges.size();
+    for (const Vec2c& v : pts) {
+      if (n == 1) {
+        swap ? consider(best, edges[0], v) : consider(best, v, edges[0]);
+        continue;
+      }
+      const std::size_t m = n == 2 ? 1 : n;
+      for (std::size_t i = 0; i < m; ++i) {
+        const Vec2c c = closest_on_segment(v, edges[i], edges[(i + 1) % n]);
+        swap ? consider(best, c, v) : consider(best, v, c);
+      }
+    }
+  };
+  vertex_vs(p.pts(), q.pts(), false);
+  vertex_vs(q.pts(), p.pts(), true);
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Penetration by separating axes, for cores that intersect.
+
+/// max over the core of x . n
+inline Calc support(const Core& c, const Vec2c& n) noexcept {
+  Calc m = -std::numeric_limits<Calc>::infinity();
+  for (const Vec2c& p : c.pts()) m = std::max(m, p.dot(n));
+  return m;
+}
+
+/// Unit outward normals of a core's edges (both sides for a segment, none for a point).
+template <class F>
+void for_each_face(const Core& c, F&& f) {
+  const std::size_t n = c.size();
+  if (n == 1) return;
+  if (n == 2) {
+    const Vec2c d = c[1] - c[0];
+    const Calc len = d.norm();
+    if (!(len > 0)) return;
+    const Vec2c nrm = Vec2c(d.y(), -d.x()) / len;
+    f(nrm, 0u);
+    f(Vec2c(-nrm), 1u);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2c d = c[(i + 1) % n] - c[i];
+    const Calc len = d.norm();
+    if (!(len > 0)) continue;
+    f(Vec2c(Vec2c(d.y(), -d.x()) / len), static_cast<unsigned>(i));
+  }
+}
+
+struct Axis {
+  Vec2c normal = Vec2c(1, 0);  ///< unit, from the first core toward the second
+  Calc depth = 0;              ///< translation along -normal that separates, radius included
+  int owner = -1;              ///< 0: a face of the first core, 1: of the second, -1: none
+  unsigned face = 0;
+};
+
+/// Axis of least penetration among the faces of both cores (Minkowski-difference faces).
+inline Axis least_penetration(const Core& p, const Core& q) {
+  Axis best;
+  best.depth = std::numeric_limits<Calc>::infinity();
+  const Calc r = p.radius + q.radius;
+  for_each_face(p, [&](const Vec2c& n, unsigned i) {
+    const Calc d = support(p, n) + support(q, -n) + r;
+    if (d < best.depth) best = {n, d, 0, i};
+  });
+  for_each_face(q, [&](const Vec2c& n, unsigned i) {
+    const Calc d = support(q, n) + support(p, -n) + r;
+    if (d < best.depth) best = {Vec2c(-n), d, 1, i};
+  });
+  if (best.owner < 0) best = {Vec2c(1, 0), r, -1, 0};  // two points: any direction will do
+  return best;
+}
+
+}  // namespace collide::detail

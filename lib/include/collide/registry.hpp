@@ -1,0 +1,166 @@
+#pragma once
+/// @file registry.hpp
+/// The one registry of shape kinds and pairs. The library's dispatch, the oracle, the property
+/// generators and the fuzz decoders all iterate these lists; none keeps its own pair table.
+///
+/// Adding a shape kind: add it to ShapeKind, kKinds, kind names, KindTraits and the Shape variant
+/// (in kind order); every consumer that misses the new kind then fails to compile.
+
+#include "collide/compound.hpp"
+#include "collide/shapes.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+namespace collide {
+
+/// Shape kinds, in the order of the Shape variant's alternatives.
+enum class ShapeKind : std::uint8_t { Circle, Aabb, Obb, Capsule, Polygon, Compound };
+
+inline constexpr std::size_t kKindCount = 6;
+inline constexpr std::array<ShapeKind, kKindCount> kKinds = {ShapeKind::Circle, ShapeKind::Aabb,
+                                                             ShapeKind::Obb,    ShapeKind::Capsule,
+                                                             ShapeKind::Polygon, ShapeKind::Compound};
+
+/// Lower-case name used in reports, case files and command lines: circle, aabb, obb, capsule,
+/// polygon, compound.
+constexpr std::string_view name(ShapeKind k) noexcept {
+  constexpr std::array<std::string_view, kKindCount> names = {"circle",  "aabb",    "obb",
+                                                              "capsule", "polygon", "compound"};
+  return names[static_cast<std::size_t>(k)];
+}
+
+constexpr std::optional<ShapeKind> kind_from_name(std::string_view s) noexcept {
+  for (ShapeKind k : kKinds) {
+    if (name(k) == s) return k;
+  }
+  return std::nullopt;
+}
+
+/// An unordered pair of kinds, stored with first <= second.
+struct KindPair {
+  ShapeKind first;
+  ShapeKind second;
+  friend constexpr bool operator==(const KindPair&, const KindPair&) = default;
+};
+
+inline constexpr std::size_t kPairCount = kKindCount * (kKindCount + 1) / 2;
+
+/// All 21 unordered pairs, in row order: (circle, circle), (circle, aabb), ..., (compound, compound).
+inline constexpr std::array<KindPair, kPairCount> kPairs = [] {
+  std::array<KindPair, kPairCount> out{};
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < kKindCount; ++i) {
+    for (std::size_t j = i; j < kKindCount; ++j) out[n++] = {kKinds[i], kKinds[j]};
+  }
+  return out;
+}();
+
+/// "circle_aabb" style name of a pair (first kind, underscore, second kind).
+inline std::string name(KindPair p) {
+  return std::string(name(p.first)) + "_" + std::string(name(p.second));
+}
+
+/// Accepts either order ("aabb_circle" == "circle_aabb").
+inline std::optional<KindPair> pair_from_name(std::string_view s) {
+  for (const KindPair& p : kPairs) {
+    if (name(p) == s) return p;
+    if (std::string(name(p.second)) + "_" + std::string(name(p.first)) == s) return p;
+  }
+  return std::nullopt;
+}
+
+/// Position of a pair in kPairs.
+constexpr std::size_t pair_index(KindPair p) noexcept {
+  for (std::size_t i = 0; i < kPairCount; ++i) {
+    if (kPairs[i] == p) return i;
+  }
+  return kPairCount;
+}
+
+constexpr KindPair make_pair(ShapeKind a, ShapeKind b) noexcept {
+  return static_cast<int>(a) <= static_cast<int>(b) ? KindPair{a, b} : KindPair{b, a};
+}
+
+/// Kind -> shape type.
+template <ShapeKind K, Scalar T>
+struct KindTraits;
+template <Scalar T> struct KindTraits<ShapeKind::Circle, T> { using type = Circle<T>; };
+template <Scalar T> struct KindTraits<ShapeKind::Aabb, T> { using type = Aabb<T>; };
+template <Scalar T> struct KindTraits<ShapeKind::Obb, T> { using type = Obb<T>; };
+template <Scalar T> struct KindTraits<ShapeKind::Capsule, T> { using type = Capsule<T>; };
+template <Scalar T> struct KindTraits<ShapeKind::Polygon, T> { using type = ConvexPolygon<T>; };
+template <Scalar T> struct KindTraits<ShapeKind::Compound, T> { using type = Compound<T>; };
+
+template <ShapeKind K, Scalar T>
+using ShapeOf = typename KindTraits<K, T>::type;
+
+/// Any shape. The alternative index equals the ShapeKind.
+template <Scalar T>
+using Shape = std::variant<Circle<T>, Aabb<T>, Obb<T>, Capsule<T>, ConvexPolygon<T>, Compound<T>>;
+
+/// Shape type -> kind.
+template <class S>
+struct KindOf;
+template <Scalar T> struct KindOf<Circle<T>> { static constexpr ShapeKind value = ShapeKind::Circle; };
+template <Scalar T> struct KindOf<Aabb<T>> { static constexpr ShapeKind value = ShapeKind::Aabb; };
+template <Scalar T> struct KindOf<Obb<T>> { static constexpr ShapeKind value = ShapeKind::Obb; };
+template <Scalar T> struct KindOf<Capsule<T>> { static constexpr ShapeKind value = ShapeKind::Capsule; };
+template <Scalar T> struct KindOf<ConvexPolygon<T>> { static constexpr ShapeKind value = ShapeKind::Polygon; };
+template <Scalar T> struct KindOf<Compound<T>> { static constexpr ShapeKind value = ShapeKind::Compound; };
+
+template <class S>
+inline constexpr ShapeKind kind_of_v = KindOf<S>::value;
+
+template <Scalar T>
+constexpr ShapeKind kind(const Shape<T>& s) noexcept {
+  return static_cast<ShapeKind>(s.index());
+}
+template <Scalar T>
+constexpr ShapeKind kind(const Primitive<T>& s) noexcept {
+  return static_cast<ShapeKind>(s.index());
+}
+
+/// Calls f.template operator()<K>() for every kind, in order.
+template <class F>
+constexpr void for_each_kind(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (f.template operator()<kKinds[I]>(), ...);
+  }(std::make_index_sequence<kKindCount>{});
+}
+
+/// Calls f.template operator()<A, B>() for every unordered pair (A <= B), in kPairs order.
+template <class F>
+constexpr void for_each_pair(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (f.template operator()<kPairs[I].first, kPairs[I].second>(), ...);
+  }(std::make_index_sequence<kPairCount>{});
+}
+
+/// Calls f.template operator()<K>() for the kind known only at run time; returns its result.
+template <class F>
+constexpr decltype(auto) visit_kind(ShapeKind k, F&& f) {
+  switch (k) {
+    case ShapeKind::Circle: return f.template operator()<ShapeKind::Circle>();
+    case ShapeKind::Aabb: return f.template operator()<ShapeKind::Aabb>();
+    case ShapeKind::Obb: return f.template operator()<ShapeKind::Obb>();
+    case ShapeKind::Capsule: return f.template operator()<ShapeKind::Capsule>();
+    case ShapeKind::Polygon: return f.template operator()<ShapeKind::Polygon>();
+    case ShapeKind::Compound: break;
+  }
+  return f.template operator()<ShapeKind::Compound>();
+}
+
+/// Upcast a primitive to a Shape.
+template <Scalar T>
+Shape<T> to_shape(const Primitive<T>& p) {
+  return std::visit([](const auto& s) { return Shape<T>(s); }, p);
+}
+
+}  // namespace collide

@@ -1,0 +1,333 @@
+#pragma once
+/// @file shapes.hpp
+/// The six shapes. Each is a plain value type whose stored values always satisfy its invariants:
+/// the only ways in are the factory `make(...)` (returns Expected, never throws) and a constructor
+/// with the same arguments (throws ShapeError). Every shape is a closed set.
+
+#include "collide/config.hpp"
+#include "collide/error.hpp"
+#include "collide/predicates.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <variant>
+#include <vector>
+
+namespace collide {
+
+namespace detail {
+
+/// Rejects NaN, infinities and magnitudes above max_magnitude<T>().
+template <Scalar T>
+inline bool check_value(T v, long index, ShapeError* out) noexcept {
+  if (!std::isfinite(v)) {
+    *out = ShapeError(Error::NonFinite, index, "value is NaN or infinite");
+    return false;
+  }
+  if (std::fabs(v) > max_magnitude<T>()) {
+    *out = ShapeError(Error::OutOfRange, index, "magnitude exceeds max_magnitude()");
+    return false;
+  }
+  return true;
+}
+
+template <Scalar T>
+inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexcept {
+  long i = 0;
+  for (T v : values) {
+    if (!check_value(v, i++, out)) return false;
+  }
+  return true;
+}
+
+struct Unchecked {};
+
+inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
+
+}  // namespace detail
+
+/// Circle: every point within `radius` of `center`. radius >= 0 (0 is a point).
+template <Scalar T>
+class Circle {
+ public:
+  /// Errors: NonFinite, OutOfRange (index 0..2 = center.x, center.y, radius), NegativeRadius.
+  static Expected<Circle> make(const Vec2<T>& center, T radius) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({center.x(), center.y(), radius}, &e)) return e;
+    if (radius < T(0)) return ShapeError(Error::NegativeRadius, -1, "circle radius is negative");
+    return Circle(detail::Unchecked{}, center, radius);
+  }
+  Circle(const Vec2<T>& center, T radius) : Circle(make(center, radius).value()) {}
+
+  const Vec2<T>& center() const noexcept { return center_; }
+  T radius() const noexcept { return radius_; }
+
+ private:
+  Circle(detail::Unchecked, const Vec2<T>& c, T r) : center_(c), radius_(r) {}
+  Vec2<T> center_;
+  T radius_;
+};
+
+/// Axis-aligned box [min.x, max.x] x [min.y, max.y]. min == max on an axis is allowed (a segment or
+/// a point).
+template <Scalar T>
+class Aabb {
+ public:
+  /// Errors: NonFinite, OutOfRange (index 0..3 = min.x, min.y, max.x, max.y), MinGreaterThanMax
+  /// (index = axis).
+  static Expected<Aabb> make(const Vec2<T>& min, const Vec2<T>& max) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({min.x(), min.y(), max.x(), max.y()}, &e)) return e;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (min[axis] > max[axis]) return ShapeError(Error::MinGreaterThanMax, axis, "AABB min exceeds max");
+    }
+    return Aabb(detail::Unchecked{}, min, max);
+  }
+  Aabb(const Vec2<T>& min, const Vec2<T>& max) : Aabb(make(min, max).value()) {}
+
+  const Vec2<T>& min() const noexcept { return min_; }
+  const Vec2<T>& max() const noexcept { return max_; }
+
+ private:
+  template <Scalar U>
+  friend Aabb<U> bounds_from_calc(const Vec2c&, const Vec2c&) noexcept;
+  Aabb(detail::Unchecked, const Vec2<T>& lo, const Vec2<T>& hi) : min_(lo), max_(hi) {}
+  Vec2<T> min_;
+  Vec2<T> max_;
+};
+
+/// Oriented box: the set center + s*hx*u + t*hy*v for s, t in [-1, 1], where u = axis() and
+/// v = perp(u) = (-u.y, u.x). The exact shape is the one these stored values define; u is the unit
+/// vector rounded to T, so |u| differs from 1 by at most one rounding.
+template <Scalar T>
+class Obb {
+ public:
+  /// Rotation given as an angle in radians (counter-clockwise from +x).
+  /// Errors: NonFinite, OutOfRange (index 0..4 = center.x, center.y, hx, hy, angle), NegativeExtent.
+  static Expected<Obb> make(const Vec2<T>& center, const Vec2<T>& half_extents, T angle) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({center.x(), center.y(), half_extents.x(), half_extents.y(), angle}, &e))
+      return e;
+    const Vec2<T> axis(static_cast<T>(std::cos(static_cast<Calc>(angle))),
+                       static_cast<T>(std::sin(static_cast<Calc>(angle))));
+    return make_with_axis(center, half_extents, axis);
+  }
+  /// Rotation given as the direction of the box's local x axis (any length > 0; normalised).
+  /// Errors: NonFinite, OutOfRange, NegativeExtent, ZeroAxis.
+  static Expected<Obb> make_with_axis(const Vec2<T>& center, const Vec2<T>& half_extents,
+                                      const Vec2<T>& axis) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>(
+            {center.x(), center.y(), half_extents.x(), half_extents.y(), axis.x(), axis.y()}, &e))
+      return e;
+    if (half_extents.x() < T(0) || half_extents.y() < T(0))
+      return ShapeError(Error::NegativeExtent, half_extents.x() < T(0) ? 0 : 1, "OBB half extent is negative");
+    const Vec2c a = widen(axis);
+    const Calc len = std::hypot(a.x(), a.y());
+    if (!(len > 0)) return ShapeError(Error::ZeroAxis, -1, "OBB axis is the zero vector");
+    const Vec2<T> u = (a / len).template cast<T>();
+    return Obb(detail::Unchecked{}, center, half_extents, u);
+  }
+  /// The lecture's form: four corners in order around the rectangle (either winding).
+  /// They must form a rectangle up to rounding: |p0 + p2 - p1 - p3| <= 16 eps_T S and
+  /// |(p1 - p0) . (p3 - p0)| <= 16 eps_T S (|p1 - p0| + |p3 - p0|), S = largest |coordinate|.
+  /// Errors: NonFinite, OutOfRange (index = 2 * corner + axis), NotARectangle.
+  static Expected<Obb> from_corners(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2,
+                                    const Vec2<T>& p3) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y(), p3.x(), p3.y()}, &e))
+      return e;
+    const Vec2c q0 = widen(p0), q1 = widen(p1), q2 = widen(p2), q3 = widen(p3);
+    const Calc scale = std::max({q0.cwiseAbs().maxCoeff(), q1.cwiseAbs().maxCoeff(),
+                                 q2.cwiseAbs().maxCoeff(), q3.cwiseAbs().maxCoeff()});
+    const Calc tol = 16 * Calc(std::numeric_limits<T>::epsilon()) * scale;
+    const Vec2c e1 = q1 - q0, e2 = q3 - q0;
+    if ((q0 + q2 - q1 - q3).cwiseAbs().maxCoeff() > 2 * tol)
+      return ShapeError(Error::NotARectangle, -1, "corners do not form a parallelogram");
+    const Calc l1 = e1.norm(), l2 = e2.norm();
+    if (std::fabs(e1.dot(e2)) > tol * (l1 + l2))
+      return ShapeError(Error::NotARectangle, -1, "corners do not meet at right angles");
+    Vec2c u(1, 0);
+    if (l1 > 0) {
+      u = e1 / l1;
+    } else if (l2 > 0) {
+      u = -perp(e2 / l2);
+    }
+    const Vec2c c = (q0 + q2) * 0.5;
+    const Vec2<T> half(static_cast<T>(l1 * 0.5), static_cast<T>(l2 * 0.5));
+    return Obb(detail::Unchecked{}, c.template cast<T>(), half, u.template cast<T>());
+  }
+  Obb(const Vec2<T>& center, const Vec2<T>& half_extents, T angle)
+      : Obb(make(center, half_extents, angle).value()) {}
+
+  const Vec2<T>& center() const noexcept { return center_; }
+  const Vec2<T>& half_extents() const noexcept { return half_; }
+  /// Unit direction of the local x axis (rounded to T).
+  const Vec2<T>& axis() const noexcept { return axis_; }
+
+ private:
+  template <Scalar U>
+  friend Obb<U> obb_translated_unchecked(const Obb<U>&, const Vec2<U>&) noexcept;
+  Obb(detail::Unchecked, const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u)
+      : center_(c), half_(h), axis_(u) {}
+  Vec2<T> center_;
+  Vec2<T> half_;
+  Vec2<T> axis_;
+};
+
+/// Capsule: every point within `radius` of the segment [a, b]. a == b is a circle.
+template <Scalar T>
+class Capsule {
+ public:
+  /// Errors: NonFinite, OutOfRange (index 0..4 = a.x, a.y, b.x, b.y, radius), NegativeRadius.
+  static Expected<Capsule> make(const Vec2<T>& a, const Vec2<T>& b, T radius) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({a.x(), a.y(), b.x(), b.y(), radius}, &e)) return e;
+    if (radius < T(0)) return ShapeError(Error::NegativeRadius, -1, "capsule radius is negative");
+    return Capsule(detail::Unchecked{}, a, b, radius);
+  }
+  Capsule(const Vec2<T>& a, const Vec2<T>& b, T radius) : Capsule(make(a, b, radius).value()) {}
+
+  const Vec2<T>& a() const noexcept { return a_; }
+  const Vec2<T>& b() const noexcept { return b_; }
+  T radius() const noexcept { return radius_; }
+
+ private:
+  Capsule(detail::Unchecked, const Vec2<T>& a, const Vec2<T>& b, T r) : a_(a), b_(b), radius_(r) {}
+  Vec2<T> a_;
+  Vec2<T> b_;
+  T radius_;
+};
+
+/// Convex polygon with vertices stored counter-clockwise, no two consecutive equal, no three
+/// consecutive collinear. Up to kInline vertices are stored without a heap allocation.
+template <Scalar T>
+class ConvexPolygon {
+ public:
+  static constexpr std::size_t kInline = 8;
+
+  /// Accepts either winding (normalised to counter-clockwise). Repeated consecutive vertices are
+  /// merged; a vertex collinear with its neighbours and lying between them is dropped. Decisions
+  /// use the exact orient() predicate.
+  /// Errors: NonFinite, OutOfRange (index = 2 * vertex + axis), TooFewVertices (< 3 distinct),
+  /// Collinear (no area), NonConvex (index = the input vertex where the boundary turns the wrong
+  /// way, doubles back, or completes a second turn).
+  static Expected<ConvexPolygon> make(std::span<const Vec2<T>> vertices) {
+    ShapeError e = detail::placeholder_error();
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      if (!detail::check_value(vertices[i].x(), long(2 * i), &e)) return e;
+      if (!detail::check_value(vertices[i].y(), long(2 * i + 1), &e)) return e;
+    }
+    // Merge repeats, remembering each kept vertex's input index for error messages.
+    std::vector<std::size_t> idx;
+    idx.reserve(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      if (idx.empty() || vertices[idx.back()] != vertices[i]) idx.push_back(i);
+    }
+    while (idx.size() > 1 && vertices[idx.front()] == vertices[idx.back()]) idx.pop_back();
+    if (idx.size() < 3) return ShapeError(Error::TooFewVertices, -1, "polygon has fewer than 3 distinct vertices");
+    auto at = [&](std::size_t k) { return widen(vertices[idx[k % idx.size()]]); };
+    // Winding: the sign of the first non-zero turn.
+    int winding = 0;
+    for (std::size_t k = 0; k < idx.size() && winding == 0; ++k) winding = orient(at(k), at(k + 1), at(k + 2));
+    if (winding == 0) return ShapeError(Error::Collinear, -1, "polygon vertices are all collinear");
+    if (winding < 0) std::reverse(idx.begin(), idx.end());
+    // Drop straight-through collinear vertices; reject wrong turns and doublings-back.
+    bool changed = true;
+    while (changed && idx.size() >= 3) {
+      changed = false;
+      for (std::size_t k = 0; k < idx.size(); ++k) {
+        const Vec2c p = at(k + idx.size() - 1), q = at(k), r = at(k + 1);
+        const int o = orient(p, q, r);
+        if (o < 0) return ShapeError(Error::NonConvex, long(idx[k]), "polygon turns the wrong way");
+        if (o == 0) {
+          if ((q - p).dot(r - q) < 0) return ShapeError(Error::NonConvex, long(idx[k]), "polygon doubles back");
+          idx.erase(idx.begin() + long(k));
+          changed = true;
+          break;
+        }
+      }
+    }
+    if (idx.size() < 3) return ShapeError(Error::Collinear, -1, "polygon vertices are all collinear");
+    // All turns are left turns; the boundary must go round exactly once. Count the edges that
+    // cross from the lower half-plane of directions into the upper one.
+    auto upper = [](const Vec2c& d) { return d.y() > 0 || (d.y() == 0 && d.x() > 0); };
+    std::size_t crossings = 0;
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      const bool u0 = upper(at(k + 1) - at(k));
+      const bool u1 = upper(at(k + 2) - at(k + 1));
+      if (!u0 && u1) {
+        if (++crossings > 1) return ShapeError(Error::NonConvex, long(idx[(k + 1) % idx.size()]), "polygon winds more than once");
+      }
+    }
+    ConvexPolygon poly;
+    poly.size_ = idx.size();
+    if (poly.size_ > kInline) poly.heap_.resize(poly.size_);
+    Vec2<T>* out = poly.size_ > kInline ? poly.heap_.data() : poly.inline_.data();
+    for (std::size_t k = 0; k < idx.size(); ++k) out[k] = vertices[idx[k]];
+    return poly;
+  }
+  /// Convex hull of any point set (monotone chain on the exact orient(); collinear points on the
+  /// hull's edges are dropped). Errors: NonFinite, OutOfRange, TooFewVertices, Collinear.
+  static Expected<ConvexPolygon> make_hull(std::span<const Vec2<T>> points) {
+    ShapeError e = detail::placeholder_error();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!detail::check_value(points[i].x(), long(2 * i), &e)) return e;
+      if (!detail::check_value(points[i].y(), long(2 * i + 1), &e)) return e;
+    }
+    std::vector<Vec2<T>> p(points.begin(), points.end());
+    std::sort(p.begin(), p.end(), [](const Vec2<T>& a, const Vec2<T>& b) {
+      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) return ShapeError(Error::TooFewVertices, -1, "fewer than 3 distinct points");
+    std::vector<Vec2<T>> h(2 * p.size());
+    std::size_t k = 0;
+    auto turn = [&](std::size_t i, const Vec2<T>& c) { return orient(widen(h[i - 2]), widen(h[i - 1]), widen(c)); };
+    for (const Vec2<T>& q : p) {
+      while (k >= 2 && turn(k, q) <= 0) --k;
+      h[k++] = q;
+    }
+    const std::size_t lower = k + 1;
+    for (std::size_t i = p.size() - 1; i-- > 0;) {
+      while (k >= lower && turn(k, p[i]) <= 0) --k;
+      h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    if (h.size() < 3) return ShapeError(Error::Collinear, -1, "points are all collinear");
+    return make(std::span<const Vec2<T>>(h));
+  }
+  static Expected<ConvexPolygon> make(std::initializer_list<Vec2<T>> vertices) {
+    return make(std::span<const Vec2<T>>(vertices.begin(), vertices.size()));
+  }
+  explicit ConvexPolygon(std::span<const Vec2<T>> vertices) : ConvexPolygon(make(vertices).value()) {}
+  ConvexPolygon(std::initializer_list<Vec2<T>> vertices) : ConvexPolygon(make(vertices).value()) {}
+
+  /// Counter-clockwise vertices.
+  std::span<const Vec2<T>> vertices() const noexcept {
+    return {size_ > kInline ? heap_.data() : inline_.data(), size_};
+  }
+  std::size_t size() const noexcept { return size_; }
+  const Vec2<T>& operator[](std::size_t i) const noexcept { return vertices()[i]; }
+
+ private:
+  ConvexPolygon() = default;
+  std::array<Vec2<T>, kInline> inline_{};
+  std::vector<Vec2<T>> heap_;
+  std::size_t size_ = 0;
+};
+
+/// One child of a compound: any shape but a compound.
+template <Scalar T>
+using Primitive = std::variant<Circle<T>, Aabb<T>, Obb<T>, Capsule<T>, ConvexPolygon<T>>;
+
+/// The union of a non-empty list of primitives, with a cached conservative bounding box checked
+/// before any child (the bounding-box early-out). Defined in compound.hpp.
+template <Scalar T>
+class Compound;
+
+}  // namespace collide
