@@ -313,8 +313,8 @@ Expected<Aabb<T>> translated(const Aabb<T>& s, const Vec2<T>& v) {
 }
 template <Scalar T>
 Expected<Obb<T>> translated(const Obb<T>& s, const Vec2<T>& v) {
-  // The stored axis is already unit length to rounding; reuse it unchanged.
-  return Obb<T>::make_with_axis(s.center() + v, s.half_extents(), s.axis());
+  // Keep the stored axis bit for bit: renormalising would rotate the box by rounding.
+  return detail::ObbAccess::with_axis_of<T>(Vec2<T>(s.center() + v), s.half_extents(), s);
 }
 template <Scalar T>
 Expected<Capsule<T>> translated(const Capsule<T>& s, const Vec2<T>& v) {

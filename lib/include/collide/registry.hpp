@@ -164,3 +164,44 @@ Shape<T> to_shape(const Primitive<T>& p) {
 }
 
 }  // namespace collide
+
+namespace collide {
+
+/// The same shape with double storage. Exact: every float converts to double without rounding,
+/// so the widened shape is the same point set (the oracle judges float shapes through this).
+inline Circle<double> widened(const Circle<float>& s) {
+  return Circle<double>(s.center().cast<double>(), s.radius());
+}
+inline Aabb<double> widened(const Aabb<float>& s) {
+  return Aabb<double>(s.min().cast<double>(), s.max().cast<double>());
+}
+inline Obb<double> widened(const Obb<float>& s) {
+  return detail::ObbAccess::with_axis_of<double>(s.center().cast<double>(), s.half_extents().cast<double>(), s)
+      .value();
+}
+inline Capsule<double> widened(const Capsule<float>& s) {
+  return Capsule<double>(s.a().cast<double>(), s.b().cast<double>(), s.radius());
+}
+inline ConvexPolygon<double> widened(const ConvexPolygon<float>& s) {
+  std::vector<Vec2<double>> v;
+  for (const Vec2<float>& p : s.vertices()) v.push_back(p.cast<double>());
+  return ConvexPolygon<double>(std::span<const Vec2<double>>(v));
+}
+inline Compound<double> widened(const Compound<float>& s) {
+  std::vector<Primitive<double>> c;
+  for (const Primitive<float>& p : s.children()) {
+    std::visit([&](const auto& x) { c.emplace_back(widened(x)); }, p);
+  }
+  return Compound<double>(std::move(c));
+}
+inline Shape<double> widened(const Shape<float>& s) {
+  return std::visit([](const auto& x) { return Shape<double>(widened(x)); }, s);
+}
+/// Identity for double shapes, so generic code can widen any shape.
+template <class S>
+  requires std::is_same_v<S, Shape<double>>
+const S& widened(const S& s) {
+  return s;
+}
+
+}  // namespace collide

@@ -45,6 +45,7 @@ inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexc
 }
 
 struct Unchecked {};
+struct ObbAccess;
 
 inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
 
@@ -170,14 +171,27 @@ class Obb {
   const Vec2<T>& axis() const noexcept { return axis_; }
 
  private:
-  template <Scalar U>
-  friend Obb<U> obb_translated_unchecked(const Obb<U>&, const Vec2<U>&) noexcept;
+  friend struct detail::ObbAccess;
   Obb(detail::Unchecked, const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u)
       : center_(c), half_(h), axis_(u) {}
   Vec2<T> center_;
   Vec2<T> half_;
   Vec2<T> axis_;
 };
+
+namespace detail {
+/// Builds an OBB keeping a stored axis bit for bit (for exact widening and translation): only
+/// the new center and extents are validated.
+struct ObbAccess {
+  template <Scalar T, Scalar U>
+  static Expected<Obb<T>> with_axis_of(const Vec2<T>& center, const Vec2<T>& half, const Obb<U>& from) {
+    ShapeError e = placeholder_error();
+    if (!check_values<T>({center.x(), center.y(), half.x(), half.y()}, &e)) return e;
+    if (half.x() < T(0) || half.y() < T(0)) return ShapeError(Error::NegativeExtent, -1, "OBB half extent is negative");
+    return Obb<T>(Unchecked{}, center, half, from.axis().template cast<T>());
+  }
+};
+}  // namespace detail
 
 /// Capsule: every point within `radius` of the segment [a, b]. a == b is a circle.
 template <Scalar T>

@@ -1,0 +1,125 @@
+#pragma once
+/// @file oracle.hpp
+/// The exact oracle: answers about the point sets that shapes' stored values define, computed in
+/// rational arithmetic (CGAL's exact kernel, GMP underneath). Float shapes are widened to double
+/// first (exact), and every double converts exactly to a rational.
+///
+/// Same convention as the library: shapes are closed sets, touching counts as overlapping.
+/// An OBB is center +- hx*u +- hy*v with the stored axis u and v = perp(u), computed exactly.
+///
+/// This header has no CGAL include: CGAL stays inside collide::oracle's translation units, and
+/// out of collide::collide (the kernel is LGPL).
+
+#include "collide/collide.hpp"
+
+#include <stdexcept>
+
+namespace collide::oracle {
+
+/// A question the oracle does not answer exactly (named in what()).
+class Unsupported : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+/// The exact answers, on double shapes. The templates below accept any shape type and scalar.
+namespace exact {
+bool overlaps(const Shape<double>& a, const Shape<double>& b);
+bool contains(const Shape<double>& s, const Vec2<double>& p);
+int compare_distance(const Shape<double>& a, const Shape<double>& b, double d);
+bool within_band(const Shape<double>& a, const Shape<double>& b, double band);
+bool separates(const Shape<double>& a, const Shape<double>& b, const Vec2<double>& t);
+int compare_depth(const Shape<double>& a, const Shape<double>& b, double len);
+bool inside_box(const Shape<double>& s, const Aabb<double>& box);
+int compare_boundary_distance(const Shape<double>& s, const Vec2<double>& p, double d);
+bool segment_meets(const Shape<double>& s, const Vec2<double>& p, const Vec2<double>& q);
+double approx_signed_distance(const Shape<double>& a, const Shape<double>& b);
+}  // namespace exact
+
+/// Any shape type as an exact Shape<double>.
+template <AnyShape S>
+Shape<double> as_exact_input(const S& s) {
+  if constexpr (VariantShape<S>) {
+    if constexpr (std::is_same_v<S, Shape<double>>) {
+      return s;
+    } else if constexpr (std::is_same_v<S, Shape<float>>) {
+      return widened(s);
+    } else {
+      return std::visit([](const auto& x) { return as_exact_input(x); }, s);
+    }
+  } else if constexpr (std::is_same_v<scalar_of_t<S>, double>) {
+    return Shape<double>(s);
+  } else {
+    return Shape<double>(widened(s));
+  }
+}
+
+/// Exact: the closed shapes share a point.
+template <AnyShape A, AnyShape B>
+bool overlaps(const A& a, const B& b) {
+  return exact::overlaps(as_exact_input(a), as_exact_input(b));
+}
+
+/// Exact: p lies in the closed shape.
+template <AnyShape S, Scalar T>
+bool contains(const S& s, const Vec2<T>& p) {
+  return exact::contains(as_exact_input(s), p.template cast<double>());
+}
+
+/// Exact sign of (gap(a, b) - d), gap = Euclidean distance between the closed shapes (0 when they
+/// overlap). d must be finite and >= 0.
+template <AnyShape A, AnyShape B>
+int compare_distance(const A& a, const B& b, double d) {
+  return exact::compare_distance(as_exact_input(a), as_exact_input(b), d);
+}
+
+/// Exact: the signed distance sigma (gap if separated, -depth if overlapping) satisfies
+/// |sigma| <= band. This is the region where overlaps() may disagree with the oracle.
+/// Throws Unsupported only where compare_depth() does and the shapes overlap by more than band
+/// cannot be decided otherwise.
+template <AnyShape A, AnyShape B>
+bool within_band(const A& a, const B& b, double band) {
+  return exact::within_band(as_exact_input(a), as_exact_input(b), band);
+}
+
+/// Exact: a moved by t (exact rational sum, no rounding) does not overlap b.
+template <AnyShape A, AnyShape B, Scalar T>
+bool separates(const A& a, const B& b, const Vec2<T>& t) {
+  return exact::separates(as_exact_input(a), as_exact_input(b), t.template cast<double>());
+}
+
+/// Exact sign of (depth(a, b) - len). depth = infimum of |t| over translations t of a after which
+/// the shapes do not overlap (0 when they do not overlap now). Pairs of primitives only; a
+/// compound throws Unsupported.
+template <AnyShape A, AnyShape B>
+int compare_depth(const A& a, const B& b, double len) {
+  return exact::compare_depth(as_exact_input(a), as_exact_input(b), len);
+}
+
+/// Exact: the closed shape lies inside the closed box.
+template <AnyShape S, Scalar T>
+bool inside_box(const S& s, const Aabb<T>& box) {
+  return exact::inside_box(as_exact_input(s), Aabb<double>(box.min().template cast<double>(),
+                                                           box.max().template cast<double>()));
+}
+
+/// Exact sign of (distance from p to the shape's boundary - d).
+template <AnyShape S, Scalar T>
+int compare_boundary_distance(const S& s, const Vec2<T>& p, double d) {
+  return exact::compare_boundary_distance(as_exact_input(s), p.template cast<double>(), d);
+}
+
+/// Exact: the closed segment [p, q] meets the closed shape.
+template <AnyShape S>
+bool segment_meets(const S& s, const Vec2<double>& p, const Vec2<double>& q) {
+  return exact::segment_meets(as_exact_input(s), p, q);
+}
+
+/// For reports only: the signed distance rounded to double (gap > 0, touching 0, -depth < 0;
+/// compounds report -0 when overlapping).
+template <AnyShape A, AnyShape B>
+double approx_signed_distance(const A& a, const B& b) {
+  return exact::approx_signed_distance(as_exact_input(a), as_exact_input(b));
+}
+
+}  // namespace collide::oracle
