@@ -1,12 +1,15 @@
 #pragma once
 /// @file collide.hpp
-/// Umbrella header: shapes, the registry, every query and the broadphase.
+/// Umbrella header: shapes, the registry and every query (overlaps, contact, resolve, distance,
+/// bounds, contains, raycast). The broadphase has its own header, collide/broadphase.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/config.hpp"
+#include "collide/contains.hpp"
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
 #include "collide/predicates.hpp"
 #include "collide/queries.hpp"
+#include "collide/raycast.hpp"
 #include "collide/registry.hpp"
 #include "collide/shapes.hpp"

@@ -61,7 +61,7 @@ Aabb<T> bounds(const ConvexPolygon<T>& s) noexcept {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  return Aabb<T>::make(lo, hi).value();
+  return detail::AabbAccess::unchecked<T>(lo, hi);
 }
 template <Scalar T>
 Aabb<T> bounds(const Primitive<T>& s) noexcept {
@@ -82,7 +82,8 @@ class Compound {
       lo = lo.cwiseMin(b.min());
       hi = hi.cwiseMax(b.max());
     }
-    return Compound(std::move(children), Aabb<T>::make(lo, hi).value());
+    // Unchecked: children's boxes may exceed max_magnitude<T>() (see AabbAccess).
+    return Compound(std::move(children), detail::AabbAccess::unchecked<T>(lo, hi));
   }
   explicit Compound(std::vector<Primitive<T>> children) : Compound(make(std::move(children)).value()) {}
 

@@ -36,8 +36,10 @@ constexpr T max_magnitude() noexcept {
   }
 }
 
-/// Absolute floor of every error bound (about 3.1e-151). Double values below 2^-500 may square to
-/// zero; answers at that scale are only as good as this floor.
+/// Absolute floor of every error bound (about 3.1e-151). A bound, not the typical error: shapes
+/// whose every value is below 2^-400 are rescaled exactly by a power of two before any rounded
+/// computation (see detail::tiny_scale), so their answers are relative-accurate; the floor covers
+/// pairs mixing tiny and ordinary magnitudes, whose squares can still underflow.
 inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 
 /// Relative factor of the overlap error bound, in units of double's unit roundoff (2^-53).

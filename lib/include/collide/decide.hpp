@@ -10,6 +10,9 @@
 /// - exact: aabb_aabb, aabb_polygon, polygon_polygon (comparisons and the exact orient()).
 /// - within overlap_tolerance() of the exact answer: every pair with a circle, a capsule or an OBB
 ///   (squared distances are rounded; OBB corners are rounded).
+/// - The three hot pairs (circle_circle, circle_aabb, aabb_aabb) are inline formulas; a round pair
+///   whose summed radius is below detail::kTinyCore takes the rescaled core path instead, so tiny
+///   (subnormal) shapes are decided to relative, not absolute, accuracy.
 ///
 /// Each function takes the pair in registry order (circle < aabb < obb < capsule < polygon).
 
@@ -20,11 +23,19 @@ namespace collide::decide {
 using detail::Core;
 
 /// Dilated cores overlap: the cores meet (exact), or their rounded squared distance is within
-/// the summed radius.
+/// the summed radius. Tiny cores (every value below detail::kTinyCore) are compared after exact
+/// rescaling, so their squares do not underflow.
 inline bool dilated_cores(const Core& p, const Core& q) {
   if (detail::cores_intersect(p, q)) return true;
   const Calc r = p.radius + q.radius;
   if (!(r > 0)) return false;
+  if (r < detail::kTinyCore) {
+    if (const int k = detail::tiny_scale(p, q); k != 0) {
+      const Core ps = detail::scaled(p, k), qs = detail::scaled(q, k);
+      const Calc rs = ps.radius + qs.radius;
+      return detail::closest_points(ps, qs).dist2 <= rs * rs;
+    }
+  }
   return detail::closest_points(p, q).dist2 <= r * r;
 }
 
@@ -32,6 +43,7 @@ template <Scalar T>
 bool circle_circle(const Circle<T>& a, const Circle<T>& b) {
   const Vec2c d = widen(b.center()) - widen(a.center());
   const Calc r = Calc(a.radius()) + Calc(b.radius());
+  if (r < detail::kTinyCore) [[unlikely]] return dilated_cores(detail::core_of(a), detail::core_of(b));
   return d.squaredNorm() <= r * r;
 }
 
@@ -40,6 +52,7 @@ bool circle_aabb(const Circle<T>& a, const Aabb<T>& b) {
   const Vec2c c = widen(a.center());
   const Vec2c nearest = c.cwiseMax(widen(b.min())).cwiseMin(widen(b.max()));
   const Calc r = a.radius();
+  if (r < detail::kTinyCore) [[unlikely]] return dilated_cores(detail::core_of(a), detail::core_of(b));
   return (c - nearest).squaredNorm() <= r * r;
 }
 
@@ -51,8 +64,9 @@ bool circle_obb(const Circle<T>& a, const Obb<T>& b) {
 template <Scalar T>
 bool circle_capsule(const Circle<T>& a, const Capsule<T>& b) {
   const Vec2c c = widen(a.center());
-  const Vec2c nearest = detail::closest_on_segment(c, widen(b.a()), widen(b.b()));
   const Calc r = Calc(a.radius()) + Calc(b.radius());
+  if (r < detail::kTinyCore) [[unlikely]] return dilated_cores(detail::core_of(a), detail::core_of(b));
+  const Vec2c nearest = detail::closest_on_segment(c, widen(b.a()), widen(b.b()));
   return (c - nearest).squaredNorm() <= r * r;
 }
 

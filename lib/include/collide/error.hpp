@@ -14,7 +14,7 @@ namespace collide {
 /// Why a shape was rejected. Every factory documents which of these it can return.
 enum class Error : std::uint8_t {
   NonFinite,          ///< a value is NaN or infinite
-  OutOfRange,         ///< a value's magnitude exceeds max_magnitude<T>() (only possible for double)
+  OutOfRange,         ///< a value's magnitude exceeds max_magnitude<T>() (2^125 for float, 2^500 for double)
   NegativeRadius,     ///< circle or capsule radius < 0
   NegativeExtent,     ///< OBB half extent < 0
   MinGreaterThanMax,  ///< AABB min exceeds max on an axis (index() names the axis: 0 = x, 1 = y)

@@ -15,6 +15,10 @@
 ///   larger than delta in magnitude. Pairs decided by exact predicates only (aabb-aabb,
 ///   aabb-polygon, polygon-polygon, and compounds made of AABBs and polygons) are always exact.
 /// - contact(a, b) exists exactly when overlaps(a, b) is true.
+/// - Tiny shapes (every value below 2^-400) are decided on exactly rescaled cores, so their
+///   answers are relative-accurate; the 2^-500 floor is a bound, not the typical error.
+/// - contains() and raycast() state their own bounds in contains.hpp and raycast.hpp, in the
+///   same form (64 * 2^-53 * scale + floor).
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
@@ -175,7 +179,7 @@ struct ContactC {
 ///   else: least-penetration face (SAT over both cores' faces); the other core's most
 ///         anti-parallel face (or its point) is clipped to the reference face's side planes,
 ///         keeping up to two points within reach of the radii.
-inline ContactC contact_cores(const Core& p, const Core& q) {
+inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
   ContactC out;
   const Calc r = p.radius + q.radius;
   if (!cores_intersect(p, q)) {
@@ -233,31 +237,56 @@ inline ContactC contact_cores(const Core& p, const Core& q) {
   }
   const Vec2c tangent = r2 - r1;
   const Calc len2 = tangent.squaredNorm();
+  bool missed = false;
   if (icount == 2 && len2 > 0) {
     // Clip the incident segment to 0 <= (x - r1) . tangent <= len2.
-    for (int side = 0; side < 2; ++side) {
+    for (int side = 0; side < 2 && !missed; ++side) {
       const Calc lim = side == 0 ? 0 : len2;
       const Calc sgn = side == 0 ? 1 : -1;
       const Calc d0 = sgn * ((ip[0] - r1).dot(tangent) - lim), d1 = sgn * ((ip[1] - r1).dot(tangent) - lim);
-      if (d0 < 0 && d1 < 0) break;  // incident face misses the reference face: fall back below
+      missed = d0 < 0 && d1 < 0;
+      if (missed) break;
       if (d0 < 0) ip[0] = ip[0] + (ip[1] - ip[0]) * (d0 / (d0 - d1));
       if (d1 < 0) ip[1] = ip[1] + (ip[0] - ip[1]) * (d1 / (d1 - d0));
     }
   }
   const Calc reach = ref.radius + inc.radius;
-  for (int i = 0; i < icount; ++i) {
+  for (int i = 0; i < icount && !missed; ++i) {
     const Calc s = (ip[i] - r1).dot(nr);
     if (s <= reach) out.points[out.count++] = ip[i] + nr * ((ref.radius - s - inc.radius) * 0.5);
   }
   if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
   if (out.count == 0) {
-    // Rounding left nothing in reach: report the deepest incident point.
-    const int k = icount == 2 && (ip[1] - r1).dot(nr) < (ip[0] - r1).dot(nr) ? 1 : 0;
-    const Calc s = (ip[k] - r1).dot(nr);
-    out.points[0] = ip[k] + nr * ((ref.radius - s - inc.radius) * 0.5);
+    // The incident face misses a short reference face, or rounding left nothing in reach. The
+    // incident core's deepest vertex is then the witness: it and its image moved by depth along
+    // the normal lie on the two shapes, so report their midpoint.
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < inc.size(); ++j) {
+      if ((inc[j] - r1).dot(nr) < (inc[k] - r1).dot(nr)) k = j;
+    }
+    const Calc s = (inc[k] - r1).dot(nr);
+    out.points[0] = inc[k] + nr * ((ref.radius - s - inc.radius) * 0.5);
     out.count = 1;
   }
   return out;
+}
+
+/// contact_cores_at_scale() after exact rescaling of tiny cores (see detail::tiny_scale).
+inline ContactC contact_cores(const Core& p, const Core& q) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return contact_cores_at_scale(p, q);
+  ContactC c = contact_cores_at_scale(scaled(p, k), scaled(q, k));
+  c.depth = std::ldexp(c.depth, -k);
+  for (Vec2c& pt : c.points) pt = Vec2c(std::ldexp(pt.x(), -k), std::ldexp(pt.y(), -k));
+  return c;
+}
+
+/// Distance between two dilated cores that do not overlap (rescaled when tiny).
+inline Calc core_gap(const Core& p, const Core& q) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return std::sqrt(closest_points(p, q).dist2) - p.radius - q.radius;
+  const Core ps = scaled(p, k), qs = scaled(q, k);
+  return std::ldexp(std::sqrt(closest_points(ps, qs).dist2) - ps.radius - qs.radius, -k);
 }
 
 template <Scalar T>
@@ -377,6 +406,19 @@ namespace detail {
 /// h(n) = max over the dilated core of x . n, for unit n.
 inline Calc dilated_support(const Core& c, const Vec2c& n) { return support(c, n) + c.radius; }
 
+/// v rounded to T with each component's magnitude rounded down, so |result| <= |v|: the push
+/// never exceeds depth + margin because of the final rounding.
+template <Scalar T>
+Vec2<T> round_toward_zero(const Vec2c& v) noexcept {
+  Vec2<T> out;
+  for (int i = 0; i < 2; ++i) {
+    T f = static_cast<T>(v[i]);
+    if (std::fabs(static_cast<Calc>(f)) > std::fabs(v[i])) f = std::nextafter(f, T(0));
+    out[i] = f;
+  }
+  return out;
+}
+
 /// Push along -n that separates every pair of children that would meet while a slides along -n:
 ///   t(n) = max over child pairs whose shadows across n overlap of  h_a(n) + h_b(-n)
 /// (the support gap; for one convex pair along its least-penetration axis it equals the depth).
@@ -398,14 +440,17 @@ Calc push_along(const A& a, const B& b, const Vec2c& n) {
 
 }  // namespace detail
 
-/// The margin resolve() adds beyond the computed depth: 4 * overlap_tolerance(a, b) plus
-/// 8 eps_T (S + depth), which covers rounding a's moved coordinates to T.
+/// The margin resolve() adds beyond the computed depth: 4 * 64 * 2^-53 * S (four times the
+/// relative part of overlap_tolerance), plus 8 eps_T (S + depth), which covers rounding a's moved
+/// coordinates to T, plus 16 subnormal units of double and one of T for rounding near zero.
+/// It has no 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
+/// relative-accurate, and a push of 2^-500 would collapse a subnormal polygon.
 template <AnyShape A, AnyShape B>
 Calc resolve_margin(const A& a, const B& b, Calc depth) {
   using T = scalar_of_t<A>;
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
-  return 4 * overlap_tolerance(a, b) + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s + depth) +
-         Calc(std::numeric_limits<T>::denorm_min());
+  return 4 * kOverlapErrorFactor * 0x1p-53 * s + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s + depth) +
+         16 * 0x1p-1074 + Calc(std::numeric_limits<T>::denorm_min());
 }
 
 /// Minimum translation of a that separates it from b (the lecture's shortest-push rule,
@@ -440,12 +485,12 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
         });
       });
       Calc margin = resolve_margin(ca, cb, best_t);
-      Vec2<T> v = (-best_n * (best_t + margin)).template cast<T>();
+      Vec2<T> v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
       for (int attempt = 0; attempt < 8; ++attempt) {
         const auto moved = translated(ca, v);
         if (!moved || !detail::overlaps_concrete(moved.value(), cb)) break;
         margin *= 2;
-        v = (-best_n * (best_t + margin)).template cast<T>();
+        v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
       }
       return v;
     });
@@ -467,9 +512,7 @@ scalar_of_t<A> distance(const A& a, const B& b) {
       Calc best = std::numeric_limits<Calc>::infinity();
       detail::for_each_primitive(ca, [&](const auto& pa) {
         detail::for_each_primitive(cb, [&](const auto& pb) {
-          const detail::Core p = detail::core_of(pa), q = detail::core_of(pb);
-          const Calc d = std::sqrt(detail::closest_points(p, q).dist2) - p.radius - q.radius;
-          best = std::min(best, d);
+          best = std::min(best, detail::core_gap(detail::core_of(pa), detail::core_of(pb)));
         });
       });
       return static_cast<T>(std::max(Calc(0), best));

@@ -46,6 +46,7 @@ inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexc
 
 struct Unchecked {};
 struct ObbAccess;
+struct AabbAccess;
 
 inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
 
@@ -96,6 +97,7 @@ class Aabb {
  private:
   template <Scalar U>
   friend Aabb<U> bounds_from_calc(const Vec2c&, const Vec2c&) noexcept;
+  friend struct detail::AabbAccess;
   Aabb(detail::Unchecked, const Vec2<T>& lo, const Vec2<T>& hi) : min_(lo), max_(hi) {}
   Vec2<T> min_;
   Vec2<T> max_;
@@ -118,6 +120,8 @@ class Obb {
     return make_with_axis(center, half_extents, axis);
   }
   /// Rotation given as the direction of the box's local x axis (any length > 0; normalised).
+  /// An axis that is already a unit vector rounded to T (| |axis|^2 - 1 | <= 4 eps_T) is stored
+  /// bit for bit, so make_with_axis(c, h, obb.axis()) rebuilds exactly the same box.
   /// Errors: NonFinite, OutOfRange, NegativeExtent, ZeroAxis.
   static Expected<Obb> make_with_axis(const Vec2<T>& center, const Vec2<T>& half_extents,
                                       const Vec2<T>& axis) noexcept {
@@ -128,6 +132,8 @@ class Obb {
     if (half_extents.x() < T(0) || half_extents.y() < T(0))
       return ShapeError(Error::NegativeExtent, half_extents.x() < T(0) ? 0 : 1, "OBB half extent is negative");
     const Vec2c a = widen(axis);
+    if (std::fabs(a.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
+      return Obb(detail::Unchecked{}, center, half_extents, axis);
     const Calc len = std::hypot(a.x(), a.y());
     if (!(len > 0)) return ShapeError(Error::ZeroAxis, -1, "OBB axis is the zero vector");
     const Vec2<T> u = (a / len).template cast<T>();
@@ -193,6 +199,18 @@ struct ObbAccess {
 };
 }  // namespace detail
 
+namespace detail {
+/// Builds a box without validation, for bounding boxes computed from valid shapes: those may
+/// exceed max_magnitude<T>() by a few times (a circle at 2^500 with radius 2^500), and must not
+/// make an otherwise valid shape fail. Precondition: finite, lo <= hi.
+struct AabbAccess {
+  template <Scalar T>
+  static Aabb<T> unchecked(const Vec2<T>& lo, const Vec2<T>& hi) noexcept {
+    return Aabb<T>(Unchecked{}, lo, hi);
+  }
+};
+}  // namespace detail
+
 /// Capsule: every point within `radius` of the segment [a, b]. a == b is a circle.
 template <Scalar T>
 class Capsule {
@@ -245,10 +263,26 @@ class ConvexPolygon {
     while (idx.size() > 1 && vertices[idx.front()] == vertices[idx.back()]) idx.pop_back();
     if (idx.size() < 3) return ShapeError(Error::TooFewVertices, -1, "polygon has fewer than 3 distinct vertices");
     auto at = [&](std::size_t k) { return widen(vertices[idx[k % idx.size()]]); };
-    // Winding: the sign of the first non-zero turn.
+    // Winding: the sign of the signed area (so that a NonConvex index names a reflex vertex of a
+    // simple polygon, not the first turn), else the sign of the first non-zero turn. Only a
+    // preference: every turn is then checked exactly.
     int winding = 0;
     for (std::size_t k = 0; k < idx.size() && winding == 0; ++k) winding = orient(at(k), at(k + 1), at(k + 2));
     if (winding == 0) return ShapeError(Error::Collinear, -1, "polygon vertices are all collinear");
+    {
+      // Tiny polygons are scaled up by 2^600 (exact) so that the cross products do not underflow.
+      Calc m = 0;
+      for (std::size_t k = 0; k < idx.size(); ++k) m = std::max(m, at(k).cwiseAbs().maxCoeff());
+      const int sc = m < 0x1p-400 ? 600 : 0;
+      const Vec2c o = at(0);
+      auto rel = [&](std::size_t k) {
+        const Vec2c d = at(k) - o;
+        return Vec2c(std::ldexp(d.x(), sc), std::ldexp(d.y(), sc));
+      };
+      Calc area2 = 0;
+      for (std::size_t k = 1; k + 1 < idx.size(); ++k) area2 += cross(rel(k), rel(k + 1));
+      if (std::isfinite(area2) && area2 != 0) winding = area2 > 0 ? 1 : -1;
+    }
     if (winding < 0) std::reverse(idx.begin(), idx.end());
     // Drop straight-through collinear vertices; reject wrong turns and doublings-back.
     bool changed = true;
@@ -259,7 +293,11 @@ class ConvexPolygon {
         const int o = orient(p, q, r);
         if (o < 0) return ShapeError(Error::NonConvex, long(idx[k]), "polygon turns the wrong way");
         if (o == 0) {
-          if ((q - p).dot(r - q) < 0) return ShapeError(Error::NonConvex, long(idx[k]), "polygon doubles back");
+          // Collinear: it doubles back iff a coordinate of the two steps has opposite signs
+          // (compared by sign, not by a dot product, which underflows for tiny coordinates).
+          auto opposite = [](Calc s1, Calc s2) { return (s1 < 0 && s2 > 0) || (s1 > 0 && s2 < 0); };
+          if (opposite(q.x() - p.x(), r.x() - q.x()) || opposite(q.y() - p.y(), r.y() - q.y()))
+            return ShapeError(Error::NonConvex, long(idx[k]), "polygon doubles back");
           idx.erase(idx.begin() + long(k));
           changed = true;
           break;

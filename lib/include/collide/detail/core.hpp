@@ -37,25 +37,6 @@ class Core {
   const Vec2c& operator[](std::size_t i) const noexcept { return pts()[i]; }
   Calc radius = 0;
 
-  /// Collapses a box core whose corners coincide (zero extent) to a segment or a point.
-  void dedupe() {
-    std::array<Vec2c, 4> keep{};
-    std::size_t k = 0;
-    for (const Vec2c& p : pts()) {
-      bool seen = false;
-      for (std::size_t i = 0; i < k; ++i) seen = seen || keep[i] == p;
-      if (!seen && k < 4) keep[k++] = p;
-    }
-    if (k == n_ || k == 0) return;
-    if (k == 3) {
-      // Three distinct corners of a rectangle cannot arise; keep the two farthest as a segment.
-      k = 2;
-    }
-    n_ = 0;
-    big_.clear();
-    for (std::size_t i = 0; i < k; ++i) push(keep[i]);
-  }
-
  private:
   std::array<Vec2c, 8> small_{};
   std::vector<Vec2c> big_;
@@ -94,8 +75,35 @@ Core core_of(const Aabb<T>& s) {
   }
   return c;
 }
+/// The convex hull of up to four points as a core (point, segment or counter-clockwise polygon),
+/// by the exact orient(). Used when rounding has collapsed or bent a box's computed corners.
+inline Core hull_core(std::array<Vec2c, 4> p) {
+  std::sort(p.begin(), p.end(), [](const Vec2c& a, const Vec2c& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::array<Vec2c, 8> h{};
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < 4; ++i) {  // lower chain
+    while (k >= 2 && orient(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = 3; i-- > 0;) {  // upper chain
+    while (k >= lower && orient(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  Core c;
+  if (k >= 2) --k;  // the last point repeats the first
+  if (k <= 2 && p[0] == p[3]) k = 1;  // every point equal
+  if (k == 2 && h[0] == h[1]) k = 1;
+  for (std::size_t i = 0; i < k; ++i) c.push(h[i]);
+  return c;
+}
+
 /// OBB corners center +- hx u +- hy v, computed in double (exact products for float input;
-/// error at most a few units of roundoff of the largest coordinate).
+/// error at most a few units of roundoff of the largest coordinate). When rounding makes the four
+/// corners coincide or fail to turn strictly left (a box thinner than the rounding of its
+/// centre), the core is their convex hull instead, so the core is always a valid convex core.
 template <Scalar T>
 Core core_of(const Obb<T>& s) {
   const Vec2c c = widen(s.center()), u = widen(s.axis());
@@ -108,10 +116,16 @@ Core core_of(const Obb<T>& s) {
     if (p1 != p0) k.push(p1);
     return k;
   }
-  k.push(c - ex - ey);
-  k.push(c + ex - ey);
-  k.push(c + ex + ey);
-  k.push(c - ex + ey);
+  const std::array<Vec2c, 4> q = {Vec2c(c - ex - ey), Vec2c(c + ex - ey), Vec2c(c + ex + ey), Vec2c(c - ex + ey)};
+  // Corners are off by a few units of roundoff of |c| + h; sides longer than 2^-40 |c| (and not
+  // subnormal-sized) keep every turn strictly left, so only thinner boxes pay for the check.
+  const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  if (!(hmin > 0x1p-40 * c.cwiseAbs().maxCoeff() && hmin > 0x1p-1000)) {
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) return hull_core(q);
+    }
+  }
+  for (const Vec2c& p : q) k.push(p);
   return k;
 }
 template <Scalar T>
@@ -119,6 +133,38 @@ Core core_of(const ConvexPolygon<T>& s) {
   Core c;
   for (const Vec2<T>& p : s.vertices()) c.push(widen(p));
   return c;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tiny shapes. Squares of coordinates below about 2^-537 underflow, which would make every
+// rounded decision absolute-accurate only (to about 2^-537). Cores whose coordinates and radii are
+// all below kTinyCore are first scaled by a power of two (exact: scaling up never rounds), so
+// decisions, depths and distances stay relative-accurate down to the subnormal range.
+
+/// Cores entirely below this magnitude are rescaled before any rounded computation.
+inline constexpr Calc kTinyCore = 0x1p-400;
+
+inline Calc max_abs(const Core& c) noexcept {
+  Calc m = std::fabs(c.radius);
+  for (const Vec2c& p : c.pts()) m = std::max({m, std::fabs(p.x()), std::fabs(p.y())});
+  return m;
+}
+
+/// The power of two that brings a tiny pair of cores to magnitude ~1; 0 when no rescaling is needed.
+inline int tiny_scale(const Core& p, const Core& q) noexcept {
+  const Calc m = std::max(max_abs(p), max_abs(q));
+  if (!(m < kTinyCore) || m == 0) return 0;
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));
+  return -e;
+}
+
+/// The core multiplied by 2^k (exact for k >= 0 within range).
+inline Core scaled(const Core& c, int k) {
+  Core out;
+  for (const Vec2c& p : c.pts()) out.push(Vec2c(std::ldexp(p.x(), k), std::ldexp(p.y(), k)));
+  out.radius = std::ldexp(c.radius, k);
+  return out;
 }
 
 /// Largest absolute coordinate of a shape's bounding box: the scale of its rounding errors.

@@ -1,0 +1,268 @@
+#pragma once
+/// @file broadphase/common.hpp
+/// What the three broadphase structures share: proxy handles, the named errors, the exact closed
+/// box test, the ray-box test, the slot table that owns stored boxes and user data, and the
+/// pair list type.
+
+#include "collide/compound.hpp"
+#include "collide/config.hpp"
+#include "collide/error.hpp"
+#include "collide/raycast.hpp"
+#include "collide/shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace collide::broadphase {
+
+/// Why a broadphase call was refused.
+enum class BroadphaseErrc : std::uint8_t {
+  InvalidProxy,   ///< the handle was never issued by this structure, or its proxy was removed
+  BadBox,         ///< a box given as raw corners is NaN, infinite, out of range or inverted
+  BadMargin,      ///< fattening margin is negative, NaN, infinite or above max_magnitude<T>()
+  BadCellSize,    ///< grid cell size is not a positive finite value
+  BadRay,         ///< ray origin/direction/length is NaN or infinite, or the length is negative
+  TooManyProxies  ///< more than 2^32 - 2 live proxies
+};
+
+/// Stable name of a broadphase error, e.g. "InvalidProxy".
+constexpr std::string_view name(BroadphaseErrc e) noexcept {
+  switch (e) {
+    case BroadphaseErrc::InvalidProxy: return "InvalidProxy";
+    case BroadphaseErrc::BadBox: return "BadBox";
+    case BroadphaseErrc::BadMargin: return "BadMargin";
+    case BroadphaseErrc::BadCellSize: return "BadCellSize";
+    case BroadphaseErrc::BadRay: return "BadRay";
+    case BroadphaseErrc::TooManyProxies: return "TooManyProxies";
+  }
+  return "Unknown";
+}
+
+/// Thrown by every broadphase operation that refuses its input; the structure is left unchanged.
+class BroadphaseError : public std::invalid_argument {
+ public:
+  BroadphaseError(BroadphaseErrc code, std::string_view what)
+      : std::invalid_argument(std::string(name(code)) + ": " + std::string(what)), code_(code) {}
+  BroadphaseErrc code() const noexcept { return code_; }
+
+ private:
+  BroadphaseErrc code_;
+};
+
+/// Handle of one proxy. A removed proxy's slot may be reused, but with a new generation, so an
+/// old handle is detected (InvalidProxy) instead of silently naming the new proxy.
+struct ProxyId {
+  std::uint32_t index = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t generation = 0;
+  friend constexpr bool operator==(const ProxyId&, const ProxyId&) = default;
+  friend constexpr auto operator<=>(const ProxyId&, const ProxyId&) = default;
+};
+
+/// One overlapping pair, reported once, with a.index < b.index.
+struct ProxyPair {
+  ProxyId a;
+  ProxyId b;
+  friend constexpr bool operator==(const ProxyPair&, const ProxyPair&) = default;
+  friend constexpr auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
+};
+
+/// Order of the pair list: Any is whatever the structure finds fastest; Sorted is ascending by
+/// (a.index, b.index), identical across structures and runs.
+enum class PairOrder : std::uint8_t { Any, Sorted };
+
+/// Plain box corners, the form the structures store (no invariant beyond what the slot table
+/// checked on the way in).
+template <Scalar T>
+struct Box {
+  Vec2<T> min = Vec2<T>::Zero();
+  Vec2<T> max = Vec2<T>::Zero();
+};
+
+/// Closed-box overlap: touching (equal coordinates) counts. Exact (comparisons only).
+template <Scalar T>
+inline bool boxes_overlap(const Box<T>& a, const Box<T>& b) noexcept {
+  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() &&
+         b.min.y() <= a.max.y();
+}
+
+/// True when `outer` contains `inner` (closed).
+template <Scalar T>
+inline bool box_contains(const Box<T>& outer, const Box<T>& inner) noexcept {
+  return outer.min.x() <= inner.min.x() && outer.min.y() <= inner.min.y() &&
+         inner.max.x() <= outer.max.x() && inner.max.y() <= outer.max.y();
+}
+
+template <Scalar T>
+inline Box<T> box_of(const Aabb<T>& a) noexcept {
+  return {a.min(), a.max()};
+}
+
+/// The box grown by margin on every side. Subtracting a non-negative value never rounds up, so
+/// the result always contains the input.
+template <Scalar T>
+inline Box<T> fattened(const Box<T>& b, T margin) noexcept {
+  return {(b.min.array() - margin).matrix(), (b.max.array() + margin).matrix()};
+}
+
+/// A segment from origin along direction, parameter t in [0, max_t] (t = 1 is origin + direction).
+/// Every structure decides with ray_hits_box(), so all three report the same proxies.
+template <Scalar T>
+struct RaySegment {
+  Vec2c origin;
+  Vec2c direction;
+  Calc max_t;
+};
+
+/// Validates and widens a ray. Errors: BadRay.
+template <Scalar T>
+inline RaySegment<T> make_ray(const Vec2<T>& origin, const Vec2<T>& direction, T max_t) {
+  const bool finite = std::isfinite(origin.x()) && std::isfinite(origin.y()) && std::isfinite(direction.x()) &&
+                      std::isfinite(direction.y()) && std::isfinite(max_t);
+  if (!finite) throw BroadphaseError(BroadphaseErrc::BadRay, "ray has a NaN or infinite value");
+  if (max_t < T(0)) throw BroadphaseError(BroadphaseErrc::BadRay, "ray length is negative");
+  return {widen(origin), widen(direction), Calc(max_t)};
+}
+
+/// Slab test in double: the entry parameter of the segment into the closed box, or a negative
+/// value when it misses. Monotone in the box (every operation rounds monotonically), so a box
+/// that contains another is hit whenever the inner one is: fat boxes can prune safely.
+template <Scalar T>
+inline Calc ray_hits_box(const RaySegment<T>& r, const Box<T>& b) noexcept {
+  Calc t0 = 0, t1 = r.max_t;
+  for (int i = 0; i < 2; ++i) {
+    const Calc lo = b.min[i], hi = b.max[i], o = r.origin[i], d = r.direction[i];
+    if (d == 0) {
+      if (o < lo || o > hi) return -1;
+      continue;
+    }
+    Calc a = (lo - o) / d, c = (hi - o) / d;
+    if (a > c) std::swap(a, c);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, c);
+    if (t0 > t1) return -1;
+  }
+  return t0;
+}
+
+/// Conservative box around the segment (padded for the rounding of origin + max_t * direction).
+template <Scalar T>
+inline std::pair<Vec2c, Vec2c> ray_bounds(const RaySegment<T>& r) noexcept {
+  const Vec2c end = r.origin + r.direction * r.max_t;
+  Vec2c lo = r.origin.cwiseMin(end), hi = r.origin.cwiseMax(end);
+  for (int i = 0; i < 2; ++i) {
+    const Calc pad = 0x1p-40 * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + 0x1p-1000;
+    lo[i] -= pad;
+    hi[i] += pad;
+  }
+  return {lo, hi};
+}
+
+/// Calls f(args...); a bool result false means "stop". Returns whether to continue.
+template <class F, class... A>
+inline bool call_continue(F& f, A&&... args) {
+  if constexpr (std::is_same_v<std::invoke_result_t<F&, A...>, bool>) {
+    return f(std::forward<A>(args)...);
+  } else {
+    f(std::forward<A>(args)...);
+    return true;
+  }
+}
+
+/// Validates raw corners into a stored box. Errors: BadBox (wrapping the shape error's text).
+template <Scalar T>
+inline Box<T> checked_box(const Vec2<T>& min, const Vec2<T>& max) {
+  const Expected<Aabb<T>> a = Aabb<T>::make(min, max);
+  if (!a) throw BroadphaseError(BroadphaseErrc::BadBox, a.error().what());
+  return box_of(a.value());
+}
+
+/// Validates a fattening margin. Errors: BadMargin.
+template <Scalar T>
+inline T checked_margin(T margin) {
+  if (!(margin >= T(0)) || !(margin <= max_magnitude<T>()))
+    throw BroadphaseError(BroadphaseErrc::BadMargin, "margin must be finite, >= 0 and <= max_magnitude()");
+  return margin;
+}
+
+/// Slot table: stored boxes, user data and generations, indexed by ProxyId::index. `Extra` is
+/// per-structure bookkeeping (a tree leaf, a grid cell range, ...).
+template <Scalar T, class Extra>
+class Slots {
+ public:
+  struct Slot {
+    Box<T> box{};
+    std::uint64_t user = 0;
+    std::uint32_t generation = 0;
+    bool live = false;
+    Extra extra{};
+  };
+
+  /// Throws InvalidProxy unless id names a live proxy.
+  std::uint32_t check(ProxyId id) const {
+    if (id.index >= slots_.size() || !slots_[id.index].live || slots_[id.index].generation != id.generation)
+      throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");
+    return id.index;
+  }
+  bool contains(ProxyId id) const noexcept {
+    return id.index < slots_.size() && slots_[id.index].live && slots_[id.index].generation == id.generation;
+  }
+  ProxyId allocate(const Box<T>& box, std::uint64_t user) {
+    std::uint32_t i;
+    if (!free_.empty()) {
+      i = free_.back();
+      free_.pop_back();
+    } else {
+      if (slots_.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
+        throw BroadphaseError(BroadphaseErrc::TooManyProxies, "too many proxies");
+      i = static_cast<std::uint32_t>(slots_.size());
+      slots_.emplace_back();
+    }
+    Slot& s = slots_[i];
+    s.box = box;
+    s.user = user;
+    s.live = true;
+    s.extra = Extra{};
+    ++live_;
+    return {i, s.generation};
+  }
+  void release(std::uint32_t i) {
+    slots_[i].live = false;
+    ++slots_[i].generation;  // wraps after 2^32 reuses of one slot; a stale handle that old is not detected
+    free_.push_back(i);
+    --live_;
+  }
+  Slot& operator[](std::uint32_t i) noexcept { return slots_[i]; }
+  const Slot& operator[](std::uint32_t i) const noexcept { return slots_[i]; }
+  ProxyId id(std::uint32_t i) const noexcept { return {i, slots_[i].generation}; }
+  std::size_t capacity() const noexcept { return slots_.size(); }
+  std::size_t size() const noexcept { return live_; }
+  void clear() {
+    slots_.clear();
+    free_.clear();
+    live_ = 0;
+  }
+
+ private:
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> free_;
+  std::size_t live_ = 0;
+};
+
+/// Orders a pair by slot index.
+inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
+  return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};
+}
+
+inline void finish_pairs(std::vector<ProxyPair>& pairs, PairOrder order) {
+  if (order == PairOrder::Sorted) std::sort(pairs.begin(), pairs.end());
+}
+
+}  // namespace collide::broadphase

@@ -1,0 +1,290 @@
+#pragma once
+/// @file raycast.hpp
+/// Ray casts: the first point of a closed shape along a ray.
+///
+/// Semantics: the ray is origin + t * direction for t >= 0; t is in units of |direction| (a
+/// direction of length 2 halves every t). raycast() returns the smallest t in [0, max_t] at which
+/// the ray meets the closed shape, the point there and the shape's unit outward normal there.
+/// - A ray starting inside or on the shape hits at t = 0 with normal = -direction / |direction|.
+/// - A zero direction hits (t = 0, normal = (0, 0)) exactly when the origin is in the shape.
+/// - A NaN or infinite coordinate in the ray, a NaN or infinite max_t, or max_t < 0: no hit.
+///
+/// Error contract (delta = raycast_tolerance(shape, ray)
+///   = (64 * 2^-53 + 4 eps_T) * M + 2^-500 + denorm_min_T, M = max(S, |origin|_inf),
+///   S = largest absolute coordinate of bounds(shape)):
+/// - a returned point lies within delta of the shape (within delta of its boundary unless t = 0),
+///   and |origin + t * direction - point| <= delta;
+/// - no ray point with parameter in [0, t) is deeper than delta inside the shape;
+/// - no hit means no ray point with parameter in [0, max_t] is deeper than delta inside the shape.
+/// So rays passing within delta of the shape (grazing, or ending within delta of it) may hit or
+/// miss; all others are decided as for the exact shape. For AABBs and polygons the t = 0 decision
+/// (origin inside) is exact. Normals are rounded unit vectors.
+
+#include "collide/compound.hpp"
+#include "collide/contains.hpp"
+#include "collide/detail/core.hpp"
+#include "collide/queries.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <variant>
+
+namespace collide {
+
+/// A ray: origin + t * direction, t >= 0. direction need not be normalised.
+template <Scalar T>
+struct Ray {
+  Vec2<T> origin;
+  Vec2<T> direction;
+};
+
+/// Where a ray first meets a shape.
+template <Scalar T>
+struct RayHit {
+  T t;             ///< ray parameter, in units of |direction|; 0 <= t <= max_t
+  Vec2<T> point;   ///< origin + t * direction (rounded)
+  Vec2<T> normal;  ///< unit outward normal of the shape at point; -direction/|direction| when t = 0
+};
+
+namespace detail {
+
+/// The ray in the computation type with a unit direction; s is the distance along it.
+struct RayC {
+  Vec2c o;
+  Vec2c u;
+  Calc s_max;  ///< max_t * |direction| (may be +inf after overflow: a bound only)
+  Calc pad;    ///< absolute padding of early-out boxes, a fraction of the error bound
+};
+
+struct HitC {
+  Calc s;
+  Vec2c normal;
+};
+
+inline bool closer(const std::optional<HitC>& h, const std::optional<HitC>& best) {
+  return h && (!best || h->s < best->s);
+}
+
+/// Entry distance of the ray into the padded box, or nothing if it misses within s_max.
+inline std::optional<Calc> ray_box_entry(const Vec2c& lo, const Vec2c& hi, const RayC& r) noexcept {
+  Calc enter = 0, exit = r.s_max;
+  for (int i = 0; i < 2; ++i) {
+    const Calc l = lo[i] - r.pad, h = hi[i] + r.pad;
+    if (r.u[i] == 0) {
+      if (r.o[i] < l || r.o[i] > h) return std::nullopt;
+      continue;
+    }
+    Calc t1 = (l - r.o[i]) / r.u[i], t2 = (h - r.o[i]) / r.u[i];
+    if (t1 > t2) std::swap(t1, t2);
+    enter = std::max(enter, t1);
+    exit = std::min(exit, t2);
+  }
+  if (!(enter <= exit)) return std::nullopt;
+  return enter;
+}
+
+/// Ray against a disk (centre c, radius r >= 0). Robust form: the perpendicular offset is computed
+/// directly rather than as a difference of squares, so grazing rays lose no precision.
+inline std::optional<HitC> ray_disk(const Vec2c& c, Calc r, const RayC& ray) noexcept {
+  const Vec2c m = ray.o - c;
+  const Calc b = m.dot(ray.u);
+  const Calc r2 = r * r;
+  if (m.squaredNorm() <= r2) {
+    const Calc len = m.norm();
+    return HitC{0, len > 0 ? Vec2c(m / len) : Vec2c(-ray.u)};
+  }
+  if (b > 0) return std::nullopt;  // outside and moving away
+  const Vec2c h = m - ray.u * b;
+  const Calc h2 = h.squaredNorm();
+  if (h2 > r2) return std::nullopt;
+  const Calc s = std::max(Calc(0), -b - std::sqrt(r2 - h2));
+  const Vec2c n = ray.o + ray.u * s - c;
+  const Calc len = n.norm();
+  return HitC{s, len > 0 ? Vec2c(n / len) : Vec2c(-ray.u)};
+}
+
+/// Cyrus-Beck clipping against half-planes n_i . x <= n_i . p_i (outward normals, any length).
+/// `plane(i, n, p)` fills the i-th half-plane. A ray starting inside gets s = 0 and the normal of
+/// the face it is closest to leaving through backwards (the entering face), else -u.
+template <class Plane>
+std::optional<HitC> ray_half_planes(std::size_t count, Plane&& plane, const RayC& ray) {
+  Calc enter = -std::numeric_limits<Calc>::infinity(), exit = std::numeric_limits<Calc>::infinity();
+  Vec2c enter_n = -ray.u;
+  for (std::size_t i = 0; i < count; ++i) {
+    Vec2c n, p;
+    plane(i, n, p);
+    const Calc num = n.dot(ray.o - p);  // > 0: origin outside this half-plane
+    const Calc den = n.dot(ray.u);
+    if (den == 0) {
+      if (num > 0) return std::nullopt;
+      continue;
+    }
+    const Calc s = -num / den;
+    if (den < 0) {
+      if (s > enter) {
+        enter = s;
+        enter_n = n;
+      }
+    } else {
+      exit = std::min(exit, s);
+    }
+  }
+  if (!(enter <= exit) || exit < 0 || enter > ray.s_max) return std::nullopt;
+  const Calc len = enter_n.norm();
+  return HitC{std::max(Calc(0), enter), len > 0 ? Vec2c(enter_n / len) : Vec2c(-ray.u)};
+}
+
+/// Ray against a closed segment [a, b] (zero thickness).
+inline std::optional<HitC> ray_segment(const Vec2c& a, const Vec2c& b, const RayC& ray) noexcept {
+  const Vec2c w = b - a, ao = a - ray.o;
+  const Calc den = cross(ray.u, w);
+  if (den == 0) {
+    if (cross(ao, ray.u) != 0) return std::nullopt;  // parallel, off the line
+    const Calc sa = ao.dot(ray.u), sb = (b - ray.o).dot(ray.u);
+    if (std::max(sa, sb) < 0) return std::nullopt;
+    return HitC{std::max(Calc(0), std::min(sa, sb)), Vec2c(-ray.u)};
+  }
+  const Calc s = cross(ao, w) / den;
+  const Calc v = cross(ao, ray.u) / den;
+  if (s < 0 || v < 0 || v > 1) return std::nullopt;
+  Vec2c n = perp(w);
+  if (n.dot(ray.u) > 0) n = -n;
+  const Calc len = n.norm();
+  return HitC{s, len > 0 ? Vec2c(n / len) : Vec2c(-ray.u)};
+}
+
+/// Ray against a dilated core (point + r, segment + r, or convex polygon + 0).
+inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
+  if (c.size() == 1) return ray_disk(c[0], c.radius, ray);
+  if (c.size() == 2) {
+    if (!(c.radius > 0)) return ray_segment(c[0], c[1], ray);
+    // Capsule: the union of the two end disks and the rectangle between them; the first hit of a
+    // union is the nearest first hit. On ties the disk wins (its normal is the true one).
+    std::optional<HitC> best = ray_disk(c[0], c.radius, ray);
+    const std::optional<HitC> hb = ray_disk(c[1], c.radius, ray);
+    if (closer(hb, best)) best = hb;
+    const Vec2c w = c[1] - c[0];
+    const Calc len = w.norm();
+    if (len > 0) {
+      const Vec2c t = w / len, n = perp(t);
+      const Vec2c ap = c[0] + n * c.radius, am = c[0] - n * c.radius;
+      const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
+        switch (i) {
+          case 0: nn = n; p = ap; break;
+          case 1: nn = -n; p = am; break;
+          case 2: nn = t; p = c[1]; break;
+          default: nn = -t; p = c[0]; break;
+        }
+      };
+      const std::optional<HitC> hr = ray_half_planes(4, plane, ray);
+      if (hr && (!best || hr->s < best->s)) best = hr;
+    }
+    return best;
+  }
+  const std::size_t n = c.size();
+  const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
+    const Vec2c e = c[(i + 1) % n] - c[i];
+    nn = Vec2c(e.y(), -e.x());
+    p = c[i];
+  };
+  return ray_half_planes(n, plane, ray);
+}
+
+/// One primitive: early-out on its bounding box, then start the exact-shape cast from the box
+/// entry so that every later product is at the shape's scale (a far origin cannot overflow).
+template <PrimitiveShape P>
+std::optional<HitC> ray_primitive(const P& shape, const RayC& ray) {
+  const Aabb<scalar_of_t<P>> box = bounds(shape);
+  const std::optional<Calc> entry = ray_box_entry(widen(box.min()), widen(box.max()), ray);
+  if (!entry) return std::nullopt;
+  RayC local = ray;
+  if (*entry > 0) {
+    local.o = ray.o + ray.u * *entry;
+    local.s_max = ray.s_max - *entry;
+  }
+  const Core core = core_of(shape);
+  Core origin;
+  origin.push(local.o);
+  std::optional<HitC> h;
+  if (const int k = tiny_scale(core, origin); k != 0) {
+    // Tiny shape and origin: rescale exactly so that squares do not underflow.
+    RayC scaled_ray = local;
+    scaled_ray.o = Vec2c(std::ldexp(local.o.x(), k), std::ldexp(local.o.y(), k));
+    scaled_ray.s_max = std::ldexp(local.s_max, k);
+    h = ray_core(scaled(core, k), scaled_ray);
+    if (h) h->s = std::ldexp(h->s, -k);
+  } else {
+    h = ray_core(core, local);
+  }
+  if (h) h->s += *entry;
+  return h;
+}
+
+template <ConcreteShape S>
+std::optional<HitC> ray_concrete(const S& shape, const RayC& ray) {
+  if constexpr (is_compound_v<S>) {
+    const Aabb<scalar_of_t<S>>& box = shape.bounds();
+    if (!ray_box_entry(widen(box.min()), widen(box.max()), ray)) return std::nullopt;
+    std::optional<HitC> best;
+    for (const auto& child : shape.children()) {
+      const std::optional<HitC> h = std::visit([&](const auto& x) { return ray_primitive(x, ray); }, child);
+      if (closer(h, best)) best = h;
+    }
+    return best;
+  } else {
+    return ray_primitive(shape, ray);
+  }
+}
+
+}  // namespace detail
+
+/// The error bound delta of raycast() (see the contract at the top of this file):
+/// (64 * 2^-53 + 4 eps_T) * max(S, |origin|_inf) + 2^-500 + denorm_min_T.
+template <AnyShape S>
+Calc raycast_tolerance(const S& shape, const Ray<scalar_of_t<S>>& ray) {
+  using T = scalar_of_t<S>;
+  const Calc m = std::max(detail::scale_of(bounds(shape)), widen(ray.origin).cwiseAbs().maxCoeff());
+  return (kOverlapErrorFactor * 0x1p-53 + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
+         Calc(std::numeric_limits<T>::denorm_min());
+}
+
+/// First point of the closed shape along the ray with 0 <= t <= max_t, or nothing.
+/// t is in units of |direction|. NaN/inf anywhere in the ray or max_t, or max_t < 0: nothing.
+/// Compounds: bounding-box early-out, then the nearest child hit.
+/// Error: see raycast_tolerance() and the contract at the top of raycast.hpp.
+template <AnyShape S>
+std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray,
+                                              scalar_of_t<S> max_t) {
+  using T = scalar_of_t<S>;
+  const Vec2c o = widen(ray.origin), d = widen(ray.direction);
+  const Calc tmax = max_t;
+  if (!o.allFinite() || !d.allFinite() || !std::isfinite(tmax) || tmax < 0) return std::nullopt;
+  const Calc dm = d.cwiseAbs().maxCoeff();
+  if (dm == 0) {
+    if (!contains(shape, ray.origin)) return std::nullopt;
+    return RayHit<T>{T(0), ray.origin, Vec2<T>::Zero()};
+  }
+  // Unit direction without overflow: scale by a power of two first (exact), then normalise.
+  int e = 0;
+  static_cast<void>(std::frexp(dm, &e));
+  const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+  const Calc len_s = ds.norm();  // |d| = len_s * 2^e
+  const Vec2c u = ds / len_s;
+  if (contains(shape, ray.origin)) return RayHit<T>{T(0), ray.origin, Vec2<T>((-u).template cast<T>())};
+
+  detail::RayC r{o, u, std::ldexp(tmax * len_s, e), 0};
+  const Calc m = std::max(detail::scale_of(bounds(shape)), o.cwiseAbs().maxCoeff());
+  r.pad = 4 * 0x1p-53 * m + 16 * 0x1p-1074;  // no 2^-500 floor: tiny shapes are rescaled
+  const std::optional<detail::HitC> h =
+      detail::visit_shape(shape, [&](const auto& x) { return detail::ray_concrete(x, r); });
+  if (!h) return std::nullopt;
+  // t = s / |d| = s / len_s * 2^-e, ordered so that neither step overflows (len_s is in [0.5, 1.5)).
+  const Calc t = e > 0 ? std::ldexp(h->s, -e) / len_s : std::ldexp(h->s / len_s, -e);
+  if (!(t <= tmax)) return std::nullopt;
+  const Vec2c point = o + u * h->s;
+  return RayHit<T>{static_cast<T>(t), point.template cast<T>(), h->normal.template cast<T>()};
+}
+
+}  // namespace collide
