@@ -1,0 +1,162 @@
+// Every pair of the registry, both argument orders, both scalars, at several scales: separated,
+// exactly touching, just separated / just overlapping (by far more than the error bound),
+// overlapping, one containing the other, coincident. Then contact, resolve and distance on the
+// same configurations. The pairs come from for_each_pair and the shapes from make_kind, so a new
+// kind or pair is covered without editing this file.
+
+#include "support.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace collide::test {
+namespace {
+
+/// The scales every pair is checked at: ordinary, 1e18 and 1e30-ish (powers of two keep every
+/// coordinate exact), a quarter of max_magnitude (squares of differences near the overflow
+/// limit of the computation), and tiny (subnormal double; near-subnormal float).
+template <Scalar T>
+std::vector<T> scales() {
+  if constexpr (std::is_same_v<T, float>) {
+    return {T(1), T(0x1p60), T(0x1p100), max_magnitude<T>() / 4, T(0x1p-100), T(0x1p-120)};
+  } else {
+    return {T(1), T(0x1p60), T(0x1p100), max_magnitude<T>() / 4, T(0x1p-900), T(0x1p-1040)};
+  }
+}
+
+/// One configuration: B of extent hb centred at (x, 0), A of extent ha at the origin.
+/// `gap` is the exact signed distance (gap > 0 separated, 0 touching, < 0 overlapping along x).
+template <ShapeKind KA, ShapeKind KB, Scalar T>
+void check_config(T ha, T hb, T x, T gap, bool contained) {
+  const auto a = make_kind<KA, T>(Vec2<T>(0, 0), ha);
+  const auto b = make_kind<KB, T>(Vec2<T>(x, 0), hb);
+  const bool ab = overlaps(a, b);
+  const bool ba = overlaps(b, a);
+  // Reversed orders call the same decision: any asymmetry means a pair table disagrees with
+  // itself (e.g. a reversed-argument slip in decide.hpp).
+  EXPECT_EQ(ab, ba);
+  // Variant dispatch must land on the same decision as the concrete call.
+  EXPECT_EQ(ab, overlaps(Shape<T>(a), Shape<T>(b)));
+  const Calc tol = overlap_tolerance(a, b);
+  const bool exact = exact_kind(KA) && exact_kind(KB);
+  const bool expected = contained || !(gap > 0);
+  if (exact || std::fabs(Calc(gap)) > tol || contained) {
+    // Outside the error band the answer must be the exact one (inside it only exact pairs are
+    // held to it). A failure here is a rounding error larger than overlap_tolerance promises.
+    EXPECT_EQ(ab, expected) << "gap " << gap << " tol " << tol;
+  }
+  // contact() exists exactly when overlaps() is true (same decision underneath).
+  EXPECT_EQ(contact(a, b).has_value(), ab);
+  EXPECT_EQ(contact(b, a).has_value(), ab);
+  if (!ab) {
+    EXPECT_EQ(resolve(a, b), Vec2<T>::Zero());
+    // The gap along x is the true distance here (every point of A has x <= ha, every point of B
+    // x >= ha + gap, and (ha, 0), (ha + gap, 0) belong to them). A failure is a wrong closest pair.
+    if (gap > 0 && std::fabs(Calc(gap)) > 8 * tol) {
+      EXPECT_NEAR(Calc(distance(a, b)), Calc(gap), 8 * tol + 4 * Calc(std::numeric_limits<T>::epsilon()) * gap);
+    }
+    return;
+  }
+  EXPECT_EQ(distance(a, b), T(0));
+  const auto c = contact(a, b);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NEAR(c->normal.template cast<Calc>().norm(), 1.0, 1e-6);  // a unit normal (rounded to T)
+  EXPECT_GE(c->depth, T(0));
+  // Resolve then re-test: moving a by resolve(a, b) must separate (strictly, after rounding to T).
+  const Vec2<T> v = resolve(a, b);
+  const auto moved = translated(a, v);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_FALSE(overlaps(moved.value(), b)) << "resolve " << v.transpose();
+  if (gap <= 0 && !contained && std::fabs(Calc(gap)) > 8 * tol) {
+    // Pushing a by |gap| along -x separates, so the minimum translation is at most that:
+    // a longer push means the least-penetration axis was missed.
+    const Calc margin = 256 * resolve_margin(a, b, -Calc(gap));
+    EXPECT_LE(Calc(c->depth), -Calc(gap) + 8 * tol);
+    EXPECT_LE(v.template cast<Calc>().norm(), -Calc(gap) + margin);
+    // And |resolve| is the contact depth plus a margin, no more.
+    EXPECT_NEAR(v.template cast<Calc>().norm(), Calc(c->depth), margin);
+  }
+}
+
+template <ShapeKind KA, ShapeKind KB, Scalar T>
+void check_pair_at(T s) {
+  const T ha = s, hb = s / 2;
+  const T near = s * T(0x1p-18);  // far above 64 * 2^-53 * S, far below the shapes' size
+  SCOPED_TRACE((pair_label<KA, KB>() + " scale " + std::to_string(double(s))));
+  {
+    SCOPED_TRACE("separated");
+    check_config<KA, KB, T>(ha, hb, ha + hb + hb / 2, hb / 2, false);
+  }
+  {
+    SCOPED_TRACE("just separated");
+    check_config<KA, KB, T>(ha, hb, ha + hb + near, near, false);
+  }
+  {
+    SCOPED_TRACE("exactly touching");
+    check_config<KA, KB, T>(ha, hb, ha + hb, T(0), false);
+  }
+  {
+    SCOPED_TRACE("just overlapping");
+    check_config<KA, KB, T>(ha, hb, ha + hb - near, -near, false);
+  }
+  {
+    SCOPED_TRACE("overlapping");
+    check_config<KA, KB, T>(ha, hb, ha + hb / 2, -hb / 2, false);
+  }
+  {
+    SCOPED_TRACE("b inside a");
+    check_config<KA, KB, T>(ha, ha / 8, T(0), T(0), true);
+  }
+  {
+    SCOPED_TRACE("a inside b");
+    check_config<KA, KB, T>(ha / 8, ha, T(0), T(0), true);
+  }
+  {
+    SCOPED_TRACE("coincident");
+    check_config<KA, KB, T>(ha, ha, T(0), T(0), true);
+  }
+}
+
+/// One test per registry pair and scalar (named e.g. PairsDouble.circle_aabb), both argument
+/// orders, every scale. Registered from for_each_pair so the list cannot drift from the registry.
+template <Scalar T>
+class PairTest : public ::testing::Test {
+ public:
+  explicit PairTest(void (*body)()) : body_(body) {}
+  void TestBody() override { body_(); }
+
+ private:
+  void (*body_)();
+};
+
+template <ShapeKind A, ShapeKind B, Scalar T>
+void run_pair() {
+  for (T s : scales<T>()) {
+    check_pair_at<A, B, T>(s);
+    if constexpr (A != B) check_pair_at<B, A, T>(s);
+  }
+}
+
+template <Scalar T>
+int register_pairs(const char* suite) {
+  int n = 0;
+  for_each_pair([&]<ShapeKind A, ShapeKind B>() {
+    ++n;
+    ::testing::RegisterTest(suite, pair_label<A, B>().c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            []() -> ::testing::Test* { return new PairTest<T>(&run_pair<A, B, T>); });
+  });
+  return n;
+}
+
+const int kRegisteredFloat = register_pairs<float>("PairsFloat");
+const int kRegisteredDouble = register_pairs<double>("PairsDouble");
+
+// The registration covered the whole registry (a for_each_pair that skipped pairs would show).
+TEST(Pairs, EveryRegistryPairIsRegistered) {
+  EXPECT_EQ(kRegisteredFloat, int(kPairCount));
+  EXPECT_EQ(kRegisteredDouble, int(kPairCount));
+  EXPECT_EQ(kPairCount, 21u);
+}
+
+}  // namespace
+}  // namespace collide::test
