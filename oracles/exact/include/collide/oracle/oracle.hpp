@@ -1,11 +1,20 @@
 #pragma once
 /// @file oracle.hpp
-/// The exact oracle: answers about the point sets that shapes' stored values define, computed in
-/// rational arithmetic (CGAL's exact kernel, GMP underneath). Float shapes are widened to double
-/// first (exact), and every double converts exactly to a rational.
+/// The exact oracle: answers about the point sets that shapes' stored values define, decided
+/// exactly (CGAL's number types, GMP underneath). Float shapes are widened to double first
+/// (exact), and every double is taken as the exact binary rational it stores.
+///
+/// Each primitive is a convex core (point, segment or convex polygon with exact vertices) dilated
+/// by a radius (0 for boxes and polygons); every answer is the sign of a polynomial in the stored
+/// values (orientations, dot products, squared distances without division), evaluated in
+/// interval arithmetic and, only for a sign the intervals cannot certify, exactly.
 ///
 /// Same convention as the library: shapes are closed sets, touching counts as overlapping.
 /// An OBB is center +- hx*u +- hy*v with the stored axis u and v = perp(u), computed exactly.
+///
+/// Call these qualified (oracle::overlaps(a, b)): an unqualified call with library shapes also
+/// finds collide::overlaps and friends by argument-dependent lookup, and the library's versions
+/// are more constrained, so they would win or the call would be ambiguous.
 ///
 /// This header has no CGAL include: CGAL stays inside collide::oracle's translation units, and
 /// out of collide::collide (the kernel is LGPL).
@@ -22,7 +31,16 @@ class Unsupported : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
+/// An argument the oracle cannot convert to a rational: a NaN or infinite coordinate, radius,
+/// distance or translation (valid shapes never hold one; the guard keeps GMP from trapping).
+class InvalidInput : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
 /// The exact answers, on double shapes. The templates below accept any shape type and scalar.
+/// Every function throws InvalidInput on a non-finite argument. Thread-safe (no shared state; the
+/// FPU rounding mode is set and restored per call).
 namespace exact {
 bool overlaps(const Shape<double>& a, const Shape<double>& b);
 bool contains(const Shape<double>& s, const Vec2<double>& p);
@@ -67,7 +85,7 @@ bool contains(const S& s, const Vec2<T>& p) {
 }
 
 /// Exact sign of (gap(a, b) - d), gap = Euclidean distance between the closed shapes (0 when they
-/// overlap). d must be finite and >= 0.
+/// overlap). d must be finite (InvalidInput otherwise); a negative d gives +1.
 template <AnyShape A, AnyShape B>
 int compare_distance(const A& a, const B& b, double d) {
   return exact::compare_distance(as_exact_input(a), as_exact_input(b), d);
@@ -75,8 +93,12 @@ int compare_distance(const A& a, const B& b, double d) {
 
 /// Exact: the signed distance sigma (gap if separated, -depth if overlapping) satisfies
 /// |sigma| <= band. This is the region where overlaps() may disagree with the oracle.
-/// Throws Unsupported only where compare_depth() does and the shapes overlap by more than band
-/// cannot be decided otherwise.
+///
+/// With a compound on either side (children a_i, b_j), defined child by child, because the
+/// library ORs its child decisions and may err on each child pair within its band:
+/// - no child pair overlaps: true iff min over pairs of gap(a_i, b_j) <= band;
+/// - some child pair overlaps: true iff every overlapping child pair has depth <= band.
+/// For two primitives this is exactly |sigma| <= band. Never throws Unsupported.
 template <AnyShape A, AnyShape B>
 bool within_band(const A& a, const B& b, double band) {
   return exact::within_band(as_exact_input(a), as_exact_input(b), band);
@@ -89,8 +111,9 @@ bool separates(const A& a, const B& b, const Vec2<T>& t) {
 }
 
 /// Exact sign of (depth(a, b) - len). depth = infimum of |t| over translations t of a after which
-/// the shapes do not overlap (0 when they do not overlap now). Pairs of primitives only; a
-/// compound throws Unsupported.
+/// the shapes do not overlap (0 when they do not overlap now). With cores Pa, Pb, radii summing
+/// to r and D = Pb - Pa (Minkowski difference): depth = dist(0, boundary of D) + r when the cores
+/// meet, else max(0, r - dist(Pa, Pb)). Pairs of primitives only; a compound throws Unsupported.
 template <AnyShape A, AnyShape B>
 int compare_depth(const A& a, const B& b, double len) {
   return exact::compare_depth(as_exact_input(a), as_exact_input(b), len);
@@ -99,11 +122,14 @@ int compare_depth(const A& a, const B& b, double len) {
 /// Exact: the closed shape lies inside the closed box.
 template <AnyShape S, Scalar T>
 bool inside_box(const S& s, const Aabb<T>& box) {
-  return exact::inside_box(as_exact_input(s), Aabb<double>(box.min().template cast<double>(),
-                                                           box.max().template cast<double>()));
+  // A bounding box may lie beyond max_magnitude() (it is rounded outward): widen it unchecked.
+  return exact::inside_box(as_exact_input(s), detail::AabbAccess::unchecked<double>(box.min().template cast<double>(),
+                                                                                   box.max().template cast<double>()));
 }
 
-/// Exact sign of (distance from p to the shape's boundary - d).
+/// Exact sign of (distance from p to the shape's boundary - d). For p inside the closed shape
+/// this is the point's depth (distance to the nearest boundary point). A compound answers only
+/// for p outside all its children (min over children); p inside a child throws Unsupported.
 template <AnyShape S, Scalar T>
 int compare_boundary_distance(const S& s, const Vec2<T>& p, double d) {
   return exact::compare_boundary_distance(as_exact_input(s), p.template cast<double>(), d);

@@ -1,0 +1,113 @@
+/// compare_depth on depths computed by hand, and within_band for primitives and compounds.
+
+#include "collide/oracle/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace collide::oracle {
+namespace {
+
+using V = Vec2<double>;
+
+/// depth(a, b) == len exactly: equal at len, above and below one step away.
+template <class A, class B>
+void expect_depth(const A& a, const B& b, double len, double step = 1e-12) {
+  EXPECT_EQ(oracle::compare_depth(a, b, len), 0) << len;
+  EXPECT_EQ(oracle::compare_depth(a, b, len - step), 1) << len;
+  EXPECT_EQ(oracle::compare_depth(a, b, len + step), -1) << len;
+  EXPECT_EQ(oracle::compare_depth(b, a, len), 0) << "reversed " << len;
+}
+
+TEST(OracleDepth, Circles) {
+  expect_depth(Circle<double>(V(0, 0), 1.0), Circle<double>(V(1, 0), 1.0), 1.0);
+  expect_depth(Circle<double>(V(0, 0), 1.0), Circle<double>(V(3, 4), 4.5), 0.5);
+  expect_depth(Circle<double>(V(2, 2), 1.0), Circle<double>(V(2, 2), 0.25), 1.25);  // same center
+}
+
+TEST(OracleDepth, IrrationalDepthIsBracketed) {
+  // depth = 2 - sqrt(2): never equal to a double.
+  const Circle<double> a(V(0, 0), 1.0), b(V(1, 1), 1.0);
+  const double approx = 2.0 - std::sqrt(2.0);
+  EXPECT_NE(oracle::compare_depth(a, b, approx), 0);
+  EXPECT_EQ(oracle::compare_depth(a, b, approx - 1e-15), 1);
+  EXPECT_EQ(oracle::compare_depth(a, b, approx + 1e-15), -1);
+}
+
+TEST(OracleDepth, Boxes) {
+  // [0,2]^2 against [1.5,3.5]x[0,2]: the x overlap 0.5 is the least push.
+  expect_depth(Aabb<double>(V(0, 0), V(2, 2)), Aabb<double>(V(1.5, 0), V(3.5, 2)), 0.5);
+  // Touching boxes: depth 0.
+  expect_depth(Aabb<double>(V(0, 0), V(2, 2)), Aabb<double>(V(2, 1), V(3, 3)), 0.0);
+  // Small box inside a big one: the big box slides left until its right side (10) reaches the
+  // small box's left side (8).
+  expect_depth(Aabb<double>(V(0, 0), V(10, 10)), Aabb<double>(V(8, 4), V(9, 6)), 2.0);
+}
+
+TEST(OracleDepth, CircleAgainstBox) {
+  // Center outside the box: r - distance to the box.
+  expect_depth(Circle<double>(V(0, 0), 1.0), Aabb<double>(V(0.5, -1), V(3, 1)), 0.5);
+  // Center inside the box: distance to the nearest side + r.
+  expect_depth(Circle<double>(V(0, 0), 0.5), Aabb<double>(V(-1, -2), V(3, 2)), 1.5);
+  // Rotated box (axis (0, 1): exact unit), center inside.
+  expect_depth(Circle<double>(V(0, 0), 0.5),
+               Obb<double>::make_with_axis(V(0, 0), V(3, 1), V(0, 1)).value(), 1.5);
+}
+
+TEST(OracleDepth, CapsulesAndPolygons) {
+  expect_depth(Capsule<double>(V(0, 0), V(4, 0), 1.0), Circle<double>(V(2, 1.5), 1.0), 0.5);
+  // Point (radius-0 circle) inside a right triangle: nearest edges are the legs, at 1.
+  const ConvexPolygon<double> tri({V(0, 0), V(4, 0), V(0, 4)});
+  expect_depth(Circle<double>(V(1, 1), 0.0), tri, 1.0);
+  // Crossing capsules (an X): the cores' difference is the square [-1,1]^2 around the origin, so
+  // depth = 1 + the radii 0.25 + 0.25.
+  expect_depth(Capsule<double>(V(-1, 0), V(1, 0), 0.25), Capsule<double>(V(0, -1), V(0, 1), 0.25), 1.5);
+  // Apart: depth 0.
+  expect_depth(Capsule<double>(V(0, 0), V(1, 0), 0.5), Capsule<double>(V(0, 3), V(1, 3), 0.5), 0.0);
+}
+
+TEST(OracleDepth, CompoundsAreUnsupported) {
+  const Compound<double> c({Circle<double>(V(0, 0), 1.0)});
+  EXPECT_THROW(oracle::compare_depth(c, Circle<double>(V(0, 0), 1.0), 1.0), Unsupported);
+  EXPECT_THROW(oracle::compare_depth(Circle<double>(V(0, 0), 1.0), c, 1.0), Unsupported);
+}
+
+TEST(OracleBand, PrimitivesUseTheSignedDistance) {
+  const Circle<double> a(V(0, 0), 1.0);
+  const Circle<double> apart(V(3, 0), 1.0);      // gap 1
+  const Circle<double> deep(V(1.5, 0), 1.0);     // depth 0.5
+  EXPECT_TRUE(oracle::within_band(a, apart, 1.0));
+  EXPECT_FALSE(oracle::within_band(a, apart, 0.999));
+  EXPECT_TRUE(oracle::within_band(a, deep, 0.5));
+  EXPECT_FALSE(oracle::within_band(a, deep, 0.499));
+  EXPECT_TRUE(oracle::within_band(a, Circle<double>(V(2, 0), 1.0), 0.0));  // touching: sigma = 0
+}
+
+TEST(OracleBand, CompoundWithNoOverlappingChildUsesTheSmallestGap) {
+  const Compound<double> two({Circle<double>(V(0, 0), 1.0), Circle<double>(V(10, 0), 1.0)});
+  const Circle<double> c(V(3, 0), 1.0);  // gaps 1 and 5
+  EXPECT_TRUE(oracle::within_band(two, c, 1.0));
+  EXPECT_FALSE(oracle::within_band(two, c, 0.99));
+  EXPECT_TRUE(oracle::within_band(c, two, 1.0));
+}
+
+TEST(OracleBand, CompoundWithOverlapsNeedsEveryOverlappingChildShallow) {
+  const Compound<double> two({Circle<double>(V(0, 0), 1.0), Circle<double>(V(10, 0), 1.0)});
+  // Overlaps the second child by 0.5; the first child's gap (9.5) does not matter.
+  const Circle<double> c(V(11.5, 0), 1.0);
+  EXPECT_TRUE(oracle::within_band(two, c, 0.5));
+  EXPECT_FALSE(oracle::within_band(two, c, 0.49));
+  // A capsule overlapping both children, by 0.5 and by 0.2: all must be within the band.
+  const Capsule<double> bar(V(1.5, 0), V(8.2, 0), 1.0);
+  EXPECT_FALSE(oracle::within_band(two, bar, 0.3));
+  EXPECT_TRUE(oracle::within_band(two, bar, 0.5));
+  EXPECT_TRUE(oracle::within_band(bar, two, 0.5));
+  // Two compounds.
+  const Compound<double> other({Circle<double>(V(1.5, 0), 1.0), Aabb<double>(V(20, 20), V(21, 21))});
+  EXPECT_TRUE(oracle::within_band(two, other, 0.5));
+  EXPECT_FALSE(oracle::within_band(two, other, 0.4));
+}
+
+}  // namespace
+}  // namespace collide::oracle
