@@ -1,0 +1,117 @@
+#pragma once
+/// @file case_file.hpp
+/// Regression cases: the values of a counterexample, stored as human-readable text with hex floats
+/// (every bit survives), replayable through the laws, and drawable as SVG.
+///
+/// Format (one item per line, '#' starts a comment, order of lines free except `child` lines,
+/// which follow their `shape ... compound N` line):
+///
+///     collide-case 1
+///     law agreement
+///     scalar float
+///     shape a circle 0x1p+0 0x0p+0 0x1p-1            # circle cx cy r
+///     shape b obb 0x1p+1 0x0p+0 0x1p+0 0x1p-1 0x1p+0 0x0p+0   # obb cx cy hx hy ux uy
+///     shape b compound 2                              # then 2 child lines:
+///     child aabb -0x1p+0 -0x1p+0 0x1p+0 0x1p+0        # aabb minx miny maxx maxy
+///     child capsule 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x1p-2   # capsule ax ay bx by r
+///     child polygon 3 x0 y0 x1 y1 x2 y2               # polygon n then n vertices
+///     translation 0x1p+0 0x1p-3                       # translation law
+///     rotation 1 mirror 0                             # rotation law
+///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast law: origin, direction
+///     values 0x1p+0 nan -inf                          # rejection law: raw values (kind = shape a's)
+///     expected overlaps true
+///     got overlaps false
+///     source property agreement circle_obb float seed 123
+///     account <one line of text>
+///
+/// Float cases store each float as the hex of its exact double value; reading checks that it
+/// narrows back exactly. OBBs store the stored unit axis, which make_with_axis() keeps bit for bit.
+
+#include "collide/collide.hpp"
+#include "collide/laws/laws.hpp"
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace collide::laws {
+
+/// A malformed case file (line number and reason in what()).
+class CaseError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A shape as raw stored values, independent of the scalar. Layout of values per kind:
+/// circle cx cy r; aabb minx miny maxx maxy; obb cx cy hx hy ux uy (stored unit axis);
+/// capsule ax ay bx by r; polygon x0 y0 x1 y1 ... (counter-clockwise as stored);
+/// compound: no values, children instead.
+struct ShapeData {
+  ShapeKind kind = ShapeKind::Circle;
+  std::vector<double> values;
+  std::vector<ShapeData> children;
+};
+
+/// One regression case: the law, the scalar, the inputs, and what was expected and found.
+struct Case {
+  std::string law;                 ///< one of kLawNames
+  std::string scalar = "double";   ///< "float" or "double"
+  ShapeData a;                     ///< first shape (the compound for hierarchy, the shape for bounds/raycast)
+  std::optional<ShapeData> b;      ///< second shape, for pair laws
+  double tx = 0, ty = 0;           ///< translation law: the move
+  int quarter_turns = 0;           ///< rotation law
+  bool mirror = false;             ///< rotation law
+  double ox = 0, oy = 0, dx = 0, dy = 0, max_t = 0;  ///< raycast law: ray origin, direction, max_t
+  std::vector<double> values;      ///< rejection law: raw values for shape a's kind
+  std::string expected;            ///< what the law expected (oracle side), one line
+  std::string got;                 ///< what the library answered, one line
+  std::string source;              ///< where it came from: property + pair + seed, or fuzz target + input
+  std::string account;             ///< the law's account, one line
+};
+
+/// The stored values of a shape.
+template <Scalar T>
+ShapeData to_data(const Shape<T>& s);
+
+/// Rebuilds the shape with exactly the stored bits. Throws CaseError when the values do not make a
+/// valid shape of that scalar (not exactly representable, rejected by make(), or an OBB axis that
+/// no input reproduces).
+template <Scalar T>
+Shape<T> from_data(const ShapeData& d);
+
+/// Pair name of the case ("circle_obb"), or the single kind name when there is no b.
+std::string pair_name(const Case& c);
+
+/// File stem: "<law>-<pair>-<scalar>-<8 hex digits of a hash of the values>".
+std::string case_stem(const Case& c);
+
+void write_case(std::ostream& out, const Case& c);
+/// Throws CaseError with the line number on malformed input.
+Case read_case(std::istream& in);
+/// Writes the .case file. Throws CaseError when the file cannot be written.
+void write_case(const std::filesystem::path& path, const Case& c);
+/// Throws CaseError when the file cannot be read or is malformed.
+Case read_case(const std::filesystem::path& path);
+
+/// Runs the case's law on its values. A case that cannot be rebuilt is a failed Verdict (not a throw).
+Verdict replay(const Case& c);
+
+/// SVG picture of the case: the shapes (a blue, b red), their bounding boxes dashed, the
+/// resolution vector for resolution cases, the moved shape for translation cases, the ray for
+/// raycast cases; the law and account as a caption. Coordinates are scaled to fit 600x600.
+void write_svg(std::ostream& out, const Case& c);
+void write_svg(const std::filesystem::path& path, const Case& c);
+
+/// Writes <dir>/<case_stem>.case and the .svg beside it (never overwrites a different case with
+/// the same stem: the hash covers the values). Returns the .case path.
+std::filesystem::path save_case(const std::filesystem::path& dir, const Case& c);
+
+/// A case from a law's inputs and its verdict (expected/got are filled from the account).
+template <Scalar T>
+Case make_case(std::string law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v,
+               std::string source);
+
+}  // namespace collide::laws

@@ -1,0 +1,146 @@
+#pragma once
+/// @file laws.hpp
+/// The laws every answer of the library must obey, as plain functions. Each law asks the library,
+/// asks the exact oracle, and returns a Verdict; none throws on a broken law. The property suite,
+/// the fuzz targets and the regression replay all call these same functions, so a counterexample
+/// found by one is judged the same way by the others.
+///
+/// Every law takes shapes as Shape<T>, T = float or double (explicitly instantiated in
+/// collide_laws). "Tolerance" below is overlap_tolerance(a, b) from queries.hpp: the band of exact
+/// signed distance inside which overlaps() may disagree with the oracle.
+
+#include "collide/collide.hpp"
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace collide::laws {
+
+/// The exact relation of two shapes, from the oracle.
+enum class Relation {
+  Separated,    ///< no common point
+  Touching,     ///< common points, but exact signed distance 0 (boundaries only)
+  Overlapping,  ///< interiors meet and neither contains the other
+  Contained,    ///< one shape lies inside the other (the container a primitive or a compound child)
+};
+
+/// "separated", "touching", "overlapping", "contained".
+std::string_view name(Relation r) noexcept;
+
+/// The result of checking one law on one input.
+struct Verdict {
+  bool ok = true;             ///< the law holds
+  bool disagreement = false;  ///< the library disagreed with the oracle where the contract allows it
+  Relation relation{};        ///< exact relation of the law's main pair (for the case distribution)
+  std::string account;        ///< what was checked and, when !ok or disagreement, the values
+  std::string expected;       ///< when !ok or disagreement: what the law required (oracle side), one line
+  std::string got;            ///< when !ok or disagreement: what the library answered, one line
+};
+
+/// Exact relation of a and b (several oracle calls). For a compound container, Contained means
+/// inside one child. OBB corners enter the containment test rounded to double; the Separated /
+/// Touching / Overlapping split is exact.
+template <Scalar T>
+Relation relation(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 1. overlaps(a, b) equals oracle::overlaps(a, b); a difference is allowed only when the exact
+/// signed distance is within overlap_tolerance(a, b) (oracle::within_band), and is then reported
+/// as a disagreement.
+template <Scalar T>
+Verdict agreement(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 2. overlaps(a, b) == overlaps(b, a) bit for bit; contact(a, b) and contact(b, a) both exist
+/// or neither does, with opposite normals and equal depths; distance(a, b) == distance(b, a).
+/// Normals and depths are compared within the tolerance (the two orders round differently); when
+/// the normals are not opposite (a tie between faces) the depths must still be equal and, for two
+/// primitives, the other order's normal must separate the pair by that depth (oracle::separates).
+template <Scalar T>
+Verdict symmetry(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 3. Moving both shapes by t (with translated()): when both moves are exact (every stored
+/// value moved by exactly t), overlaps() gives the identical answer; otherwise the moved pair
+/// must agree with the oracle, within the tolerance. An identical-answer failure inside the
+/// band is a disagreement, not a failure. A move that leaves the representable range is
+/// rejected by translated() with a named error and is not a failure.
+template <Scalar T>
+Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t);
+
+/// Law 4. Rotating both shapes about the origin by quarter_turns * 90 degrees, then mirroring
+/// x -> -x when mirror is set (both exact on the stored values), gives identical answers of
+/// overlaps(). An OBB is first rebuilt through make_with_axis from its own axis, so that the
+/// rotated box is exactly the rotated point set.
+template <Scalar T>
+Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool mirror);
+
+/// Law 5. v = resolve(a, b): zero when overlaps(a, b) is false (an exact overlap then allowed only
+/// within the band); otherwise the shape a' that translated(a, v) produces does not overlap b
+/// (oracle), and, for two primitives, |v| <= exact depth + resolve_margin + slack, where slack =
+/// 4 tolerances (the computed depth's own error, as in contact_law) plus v's rounding to T
+/// (oracle::compare_depth). Compounds: separation only (the oracle has no exact depth for them).
+template <Scalar T>
+Verdict resolution(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 6a. bounds(s) contains s exactly (oracle::inside_box).
+template <Scalar T>
+Verdict bounds_law(const Shape<T>& s);
+
+/// A ray for raycast_law: origin + t * direction, t >= 0. Mirrors collide::Ray<T> so that the
+/// laws do not depend on which header declares the library's ray.
+template <Scalar T>
+struct RayInput {
+  Vec2<T> origin;
+  Vec2<T> direction;
+};
+
+/// Law 6b. raycast(s, ray, max_t), judged by raycast.hpp's contract with its bound
+/// delta = raycast_tolerance(s, ray): a hit has 0 <= t <= max_t, its point is within delta of the
+/// shape and of origin + t * direction; an origin inside the shape (deeper than delta) hits at
+/// t = 0; before the hit (or up to max_t when there is none) the ray passes no point deeper than
+/// delta inside the shape, checked by oracle::segment_meets against the shape shrunk by delta
+/// (circles, capsules, AABBs, OBBs and such compound children; polygons are not shrunk here).
+template <Scalar T>
+Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t);
+
+/// Law 7. overlaps(compound, x) == any child overlaps x (library against library, identical), and
+/// the bounding-box early-out never changes an answer: when the compound's cached box misses x's
+/// box, no child overlaps x, by the library and by the oracle. compound must hold a Compound.
+template <Scalar T>
+Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x);
+
+/// Law 8. The same point set in another representation gives the identical overlaps() answer
+/// against x: an AABB as a 4-vertex ConvexPolygon and as an unrotated OBB; a circle as a
+/// zero-length capsule; a zero-length capsule as a circle; an OBB with axis (1, 0) as an AABB.
+/// A representation that cannot be built exactly (e.g. a degenerate box as a polygon) is skipped
+/// and named in the account. Different answers within the band are a disagreement.
+template <Scalar T>
+Verdict representation(const Shape<T>& a, const Shape<T>& x);
+
+/// Law 8b. contact(a, b) exists exactly when overlaps(a, b); its normal is a unit vector, its
+/// depth >= 0 and, for primitives, within 4 tolerances of the exact depth (plus T's rounding);
+/// each contact point lies within depth + 4 tolerances of both shapes.
+template <Scalar T>
+Verdict contact_law(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 8c. distance(a, b) is 0 exactly when overlaps(a, b), and otherwise within 4 tolerances
+/// (plus T's rounding) of the exact gap (oracle::compare_distance).
+template <Scalar T>
+Verdict distance_law(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 9. Building a shape of `kind` from raw values (any bit patterns) through its make():
+/// NaN or infinity gives Error::NonFinite, a magnitude above max_magnitude<T>() Error::OutOfRange
+/// (first offending value in argument order), then the kind's own named errors (negative radius
+/// or extent, min > max, zero axis; polygons: TooFewVertices, Collinear or NonConvex), and
+/// valid values give a shape. Never throws, crashes or hangs. Value layout per kind is that of
+/// ShapeData in case_file.hpp (circle cx cy r; aabb minx miny maxx maxy; obb cx cy hx hy ux uy;
+/// capsule ax ay bx by r; polygon x0 y0 x1 y1 ...); compound is built from one circle child.
+template <Scalar T>
+Verdict rejection(ShapeKind kind, std::span<const T> values);
+
+/// The names of the laws as they appear in case files, reports and test names.
+inline constexpr std::string_view kLawNames[] = {"agreement",  "symmetry",       "translation",
+                                                 "rotation",   "resolution",     "bounds",
+                                                 "raycast",    "hierarchy",      "representation",
+                                                 "contact",    "distance",       "rejection"};
+
+}  // namespace collide::laws

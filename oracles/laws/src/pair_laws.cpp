@@ -1,0 +1,497 @@
+// The laws on a pair of shapes: agreement, symmetry, translation, rotation, resolution,
+// hierarchy, representation, contact, distance.
+
+#include "support.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace collide::laws {
+
+using detail::describe;
+using detail::num;
+using detail::vec;
+using detail::yes;
+
+namespace {
+
+/// Fills a failed (or disagreeing) verdict.
+void fail(Verdict& v, std::string expected, std::string got, const std::string& context) {
+  v.ok = false;
+  v.expected = std::move(expected);
+  v.got = std::move(got);
+  v.account = "expected " + v.expected + "; got " + v.got + "; " + context;
+}
+
+template <Scalar T>
+std::string pair_text(const Shape<T>& a, const Shape<T>& b) {
+  return "a = " + describe(a) + "; b = " + describe(b);
+}
+
+/// Runs a law body, turning an exception from the oracle or the library into a failed verdict
+/// (a law must report, not throw).
+template <class F>
+Verdict guarded(F&& body) {
+  Verdict v;
+  try {
+    body(v);
+  } catch (const std::exception& e) {
+    v.ok = false;
+    v.expected = "no exception";
+    v.got = std::string("exception: ") + e.what();
+    v.account = "expected no exception; got " + v.got + (v.account.empty() ? "" : "; " + v.account);
+  }
+  return v;
+}
+
+/// A difference between two library answers for the same exact question, allowed only inside the
+/// band of both pairs: records a disagreement, or fails.
+template <Scalar T>
+void allow_in_band(Verdict& v, const Shape<T>& a, const Shape<T>& b, double band, const std::string& what) {
+  v.disagreement = true;
+  const bool in_band = oracle::within_band(a, b, band);
+  if (in_band) {
+    v.account += "; " + what + " (within band " + num(band) + ": allowed)";
+  } else {
+    fail(v, "identical answers outside the band " + num(band), what,
+         "signed distance ~" + num(oracle::approx_signed_distance(a, b)) + "; " + pair_text(a, b));
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+template <Scalar T>
+Verdict agreement(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool got = overlaps(a, b);
+    const bool exact = oracle::overlaps(a, b);
+    v.account = "overlaps " + yes(got) + ", exact " + yes(exact);
+    if (got == exact) return;
+    v.disagreement = true;
+    v.expected = "overlaps " + yes(exact);
+    v.got = "overlaps " + yes(got);
+    const double tol = overlap_tolerance(a, b);
+    const double sd = oracle::approx_signed_distance(a, b);
+    if (oracle::within_band(a, b, tol)) {
+      v.account += "; disagreement within the band: signed distance ~" + num(sd) + ", tolerance " + num(tol);
+      return;
+    }
+    v.ok = false;
+    v.account = "expected overlaps " + yes(exact) + "; got " + yes(got) + "; signed distance ~" + num(sd) +
+                " is outside the band " + num(tol) + "; " + pair_text(a, b);
+  });
+}
+
+template <Scalar T>
+Verdict symmetry(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool ab = overlaps(a, b), ba = overlaps(b, a);
+    if (ab != ba) {
+      fail(v, "overlaps(a, b) == overlaps(b, a)", "overlaps(a, b) " + yes(ab) + ", overlaps(b, a) " + yes(ba),
+           pair_text(a, b));
+      return;
+    }
+    const double tol = overlap_tolerance(a, b);
+    const auto cab = contact(a, b), cba = contact(b, a);
+    if (bool(cab) != ab || bool(cba) != ba) {
+      fail(v, "contact exists exactly when overlaps (" + yes(ab) + ")",
+           "contact(a, b) " + yes(bool(cab)) + ", contact(b, a) " + yes(bool(cba)), pair_text(a, b));
+      return;
+    }
+    if (cab) {
+      const double d1 = cab->depth, d2 = cba->depth;
+      const double dtol = tol + 4 * detail::eps<T>() * std::max(d1, d2);
+      if (std::fabs(d1 - d2) > dtol) {
+        fail(v, "equal depths (within " + num(dtol) + ")", "depth(a, b) " + num(d1) + ", depth(b, a) " + num(d2),
+             pair_text(a, b));
+        return;
+      }
+      const Vec2c n1 = cab->normal.template cast<double>(), n2 = cba->normal.template cast<double>();
+      if ((n1 + n2).cwiseAbs().maxCoeff() > 8 * detail::eps<T>()) {
+        // Not opposite: allowed only when the depth is attained along both directions (a tie
+        // between faces). Check that -n(b, a) also separates a from b by that depth.
+        // Compounds: the deepest child pair's tie; other children may block that direction (the
+        // equal depth, checked above, is the law there).
+        const Vec2c push = n2 * (std::max(d1, d2) + 4 * tol + 4 * detail::eps<T>() * (1 + d1));
+        if (!detail::is_compound(a) && !detail::is_compound(b) && !oracle::separates(a, b, push)) {
+          fail(v, "opposite normals, or the other order's normal separating by the same depth",
+               "normal(a, b) " + vec(cab->normal) + ", normal(b, a) " + vec(cba->normal) + ", depth " + num(d1),
+               pair_text(a, b));
+          return;
+        }
+        v.account += "; normals differ on a tie: " + vec(cab->normal) + " vs " + vec(cba->normal);
+      }
+    }
+    const double g1 = distance(a, b), g2 = distance(b, a);
+    const double gtol = tol + 4 * detail::eps<T>() * std::max(g1, g2);
+    if (std::fabs(g1 - g2) > gtol) {
+      fail(v, "equal distances (within " + num(gtol) + ")", "distance(a, b) " + num(g1) + ", distance(b, a) " + num(g2),
+           pair_text(a, b));
+      return;
+    }
+    v.account = "overlaps " + yes(ab) + " both ways" + v.account;
+  });
+}
+
+template <Scalar T>
+Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const Expected<Shape<T>> ma = translated(a, t), mb = translated(b, t);
+    if (!ma || !mb) {
+      const ShapeError& e = !ma ? ma.error() : mb.error();
+      const Error code = e.code();
+      // Moving can leave the range or (polygons rounded to T) collapse a sliver: named errors.
+      const bool named = code == Error::OutOfRange || code == Error::Collinear || code == Error::TooFewVertices ||
+                         code == Error::NonFinite;
+      v.account = std::string("move rejected: ") + e.what();
+      if (!named) fail(v, "a named range or collapse error", e.what(), pair_text(a, b) + "; t = " + vec(t));
+      return;
+    }
+    const Shape<T>& a2 = ma.value();
+    const Shape<T>& b2 = mb.value();
+    const bool before = overlaps(a, b), after = overlaps(a2, b2);
+    const bool exact = detail::exact_move(a, a2, t) && detail::exact_move(b, b2, t);
+    v.account = std::string(exact ? "exact" : "rounded") + " move by " + vec(t) + ": overlaps " + yes(before) +
+                " -> " + yes(after);
+    const double tol = std::max(overlap_tolerance(a, b), overlap_tolerance(a2, b2));
+    if (exact) {
+      if (before != after) allow_in_band(v, a, b, tol, "answer changed under an exact move");
+      return;
+    }
+    // A rounded move: the moved pair is a different exact question; it must agree with the oracle,
+    // and an answer may change only where the unmoved pair was within the band plus the rounding.
+    const bool exact_after = oracle::overlaps(a2, b2);
+    if (after != exact_after) {
+      v.disagreement = true;
+      if (!oracle::within_band(a2, b2, overlap_tolerance(a2, b2))) {
+        fail(v, "moved pair overlaps " + yes(exact_after), "overlaps " + yes(after),
+             "moved a = " + describe(a2) + "; moved b = " + describe(b2));
+        return;
+      }
+    }
+    if (before != after) {
+      const double scale = std::max(::collide::detail::scale_of(bounds(a2)), ::collide::detail::scale_of(bounds(b2)));
+      const double band = tol + 4 * detail::eps<T>() * scale;
+      allow_in_band(v, a, b, band, "answer changed under a rounded move");
+    }
+  });
+}
+
+template <Scalar T>
+Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool mirror) {
+  return guarded([&](Verdict& v) {
+    const Shape<T> a0 = detail::turned(a, 0, false), b0 = detail::turned(b, 0, false);
+    const Shape<T> a1 = detail::turned(a, quarter_turns, mirror), b1 = detail::turned(b, quarter_turns, mirror);
+    v.relation = relation(a0, b0);
+    const bool before = overlaps(a0, b0), after = overlaps(a1, b1);
+    v.account = std::to_string(quarter_turns) + " quarter turns" + (mirror ? " + mirror" : "") + ": overlaps " +
+                yes(before) + " -> " + yes(after);
+    if (before == after) return;
+    const double tol = std::max(overlap_tolerance(a0, b0), overlap_tolerance(a1, b1));
+    allow_in_band(v, a0, b0, tol, "answer changed under an exact rotation");
+  });
+}
+
+template <Scalar T>
+Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool got = overlaps(a, b);
+    const Vec2<T> push = resolve(a, b);
+    if (!got) {
+      v.account = "no overlap reported, push " + vec(push);
+      if (push != Vec2<T>::Zero()) fail(v, "zero push when overlaps() is false", "push " + vec(push), pair_text(a, b));
+      // An exact overlap the library missed is allowed only within the band (as in law 1).
+      if (oracle::overlaps(a, b)) {
+        v.disagreement = true;
+        const double tol = overlap_tolerance(a, b);
+        if (!oracle::within_band(a, b, tol))
+          fail(v, "overlaps() true (exact overlap beyond the band " + num(tol) + ")", "no overlap, push " + vec(push),
+               pair_text(a, b));
+      }
+      return;
+    }
+    const Expected<Shape<T>> moved = translated(a, push);
+    if (!moved) {
+      fail(v, "a moved by resolve(a, b) is a valid shape", std::string("translated failed: ") + moved.error().what(),
+           "push " + vec(push) + "; " + pair_text(a, b));
+      return;
+    }
+    // Judge the shape translated() really produced (rounded to T), against b.
+    if (oracle::overlaps(moved.value(), b)) {
+      fail(v, "a + push does not overlap b", "still overlapping, signed distance ~" +
+                                                   num(oracle::approx_signed_distance(moved.value(), b)),
+           "push " + vec(push) + "; moved a = " + describe(moved.value()) + "; " + pair_text(a, b));
+      return;
+    }
+    const double len = push.template cast<double>().norm();
+    v.account = "push " + vec(push) + " (|v| = " + num(len) + ") separates";
+    if (detail::is_compound(a) || detail::is_compound(b)) {
+      v.account += "; compound: separation only (no exact depth)";
+      return;
+    }
+    // Minimality: |v| <= depth + margin + slack, i.e. depth >= |v| - margin - slack. The slack is
+    // the computed depth's own error (4 tolerances, as the contact law allows) plus v's rounding
+    // to T and |v|'s rounding.
+    const double margin = resolve_margin(a, b, len);
+    const double slack = 4 * overlap_tolerance(a, b) + 2 * detail::eps<T>() * len + 4 * 0x1p-53 * len;
+    const double lower = len - margin - slack;
+    if (lower > 0 && oracle::compare_depth(a, b, lower) < 0) {
+      fail(v, "|v| <= exact depth + resolve_margin (" + num(margin) + ") + slack (" + num(slack) + ")",
+           "|v| = " + num(len) + ", exact depth < " + num(lower) + " (~" +
+               num(-oracle::approx_signed_distance(a, b)) + ")",
+           "push " + vec(push) + "; " + pair_text(a, b));
+    }
+  });
+}
+
+template <Scalar T>
+Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x) {
+  return guarded([&](Verdict& v) {
+    const auto* c = std::get_if<Compound<T>>(&compound);
+    if (c == nullptr) {
+      fail(v, "a compound as first argument", describe(compound), "hierarchy law");
+      return;
+    }
+    v.relation = relation(compound, x);
+    const bool whole = overlaps(compound, x);
+    bool any = false;
+    for (const Primitive<T>& child : c->children()) any = any || overlaps(child, x);
+    v.account = "overlaps " + yes(whole) + ", any child " + yes(any);
+    if (whole != any) {
+      fail(v, "overlaps(compound, x) == any child overlaps x (" + yes(any) + ")", "overlaps " + yes(whole),
+           pair_text(compound, x));
+      return;
+    }
+    // The early-out: boxes compared here by their stored values (not by the library's box test).
+    const Aabb<T> bc = c->bounds(), bx = bounds(x);
+    const bool boxes_meet = !(bc.max().x() < bx.min().x() || bx.max().x() < bc.min().x() ||
+                              bc.max().y() < bx.min().y() || bx.max().y() < bc.min().y());
+    v.account += std::string("; boxes ") + (boxes_meet ? "meet" : "miss");
+    if (boxes_meet) return;
+    for (const Primitive<T>& child : c->children()) {
+      if (overlaps(child, x) || oracle::overlaps(child, x)) {
+        fail(v, "no child overlaps x when the compound's box misses x's box",
+             "child " + describe(child) + " overlaps x", pair_text(compound, x));
+        return;
+      }
+    }
+  });
+}
+
+namespace {
+
+/// The other representations of the same point set (see laws::representation), with their names.
+template <Scalar T>
+std::vector<std::pair<std::string, Shape<T>>> other_forms(const Shape<T>& a, std::string& skipped) {
+  std::vector<std::pair<std::string, Shape<T>>> out;
+  if (const auto* box = std::get_if<Aabb<T>>(&a)) {
+    const Vec2<T> lo = box->min(), hi = box->max();
+    if (lo.x() < hi.x() && lo.y() < hi.y()) {
+      const std::vector<Vec2<T>> v = {lo, Vec2<T>(hi.x(), lo.y()), hi, Vec2<T>(lo.x(), hi.y())};
+      out.emplace_back("polygon", ConvexPolygon<T>::make(std::span<const Vec2<T>>(v)).value());
+    } else {
+      skipped += " polygon (degenerate box)";
+    }
+    const Vec2<T> c = (lo + hi) / T(2), h = (hi - lo) / T(2);
+    const bool exact = c - h == lo && c + h == hi &&
+                       detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
+                       detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
+                       detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
+                       detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
+    const auto obb = Obb<T>::make_with_axis(c, h, Vec2<T>(1, 0));
+    if (exact && obb && obb.value().axis() == Vec2<T>(1, 0)) {
+      out.emplace_back("obb", obb.value());
+    } else {
+      skipped += " obb (centre and half extents not exact)";
+    }
+  } else if (const auto* circle = std::get_if<Circle<T>>(&a)) {
+    out.emplace_back("capsule", Capsule<T>(circle->center(), circle->center(), circle->radius()));
+  } else if (const auto* cap = std::get_if<Capsule<T>>(&a)) {
+    out.emplace_back("reversed capsule", Capsule<T>(cap->b(), cap->a(), cap->radius()));
+    if (cap->a() == cap->b()) {
+      out.emplace_back("circle", Circle<T>(cap->a(), cap->radius()));
+    } else {
+      skipped += " circle (capsule has length)";
+    }
+  } else if (const auto* poly = std::get_if<ConvexPolygon<T>>(&a)) {
+    // Same vertices from another start; and an axis-aligned rectangle as an AABB.
+    const auto v = poly->vertices();
+    std::vector<Vec2<T>> shifted(v.begin() + 1, v.end());
+    shifted.push_back(v[0]);
+    out.emplace_back("polygon from vertex 1", ConvexPolygon<T>::make(std::span<const Vec2<T>>(shifted)).value());
+    const Aabb<T> box = bounds(*poly);
+    bool rect = v.size() == 4;
+    for (const Vec2<T>& p : v) {
+      rect = rect && (p.x() == box.min().x() || p.x() == box.max().x()) &&
+             (p.y() == box.min().y() || p.y() == box.max().y());
+    }
+    if (rect) {
+      out.emplace_back("aabb", box);
+    } else {
+      skipped += " aabb (not an axis-aligned rectangle)";
+    }
+  } else if (const auto* comp = std::get_if<Compound<T>>(&a)) {
+    std::vector<Primitive<T>> rev(comp->children().rbegin(), comp->children().rend());
+    out.emplace_back("compound reversed", Compound<T>(std::move(rev)));
+    if (comp->children().size() == 1) out.emplace_back("its child", to_shape(comp->children().front()));
+  } else if (const auto* obb = std::get_if<Obb<T>>(&a)) {
+    const Vec2<T> c = obb->center(), h = obb->half_extents();
+    const bool axis_x = obb->axis() == Vec2<T>(1, 0);
+    const Vec2<T> lo = c - h, hi = c + h;
+    const bool exact = detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
+                       detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
+                       detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
+                       detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
+    if (axis_x && exact) {
+      out.emplace_back("aabb", Aabb<T>(lo, hi));
+    } else {
+      skipped += " aabb (rotated or inexact box)";
+    }
+    // The same box with its axes exchanged: extents swapped, axis turned a quarter (compared
+    // against the box rebuilt from the same input axis, as the rotation law does).
+    const Vec2<T> u = obb->axis();
+    const auto swapped = Obb<T>::make_with_axis(c, Vec2<T>(h.y(), h.x()), Vec2<T>(-u.y(), u.x()));
+    const auto canonical = Obb<T>::make_with_axis(c, h, u);
+    if (swapped && canonical && swapped.value().axis() == Vec2<T>(-canonical.value().axis().y(), canonical.value().axis().x()) &&
+        canonical.value().axis() == u) {
+      out.emplace_back("obb with axes exchanged", swapped.value());
+    } else {
+      skipped += " obb with axes exchanged (axis not a fixed point of normalisation)";
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+template <Scalar T>
+Verdict representation(const Shape<T>& a, const Shape<T>& x) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, x);
+    std::string skipped;
+    const auto forms = other_forms(a, skipped);
+    const bool base = overlaps(a, x);
+    const bool base_exact = oracle::overlaps(a, x);
+    v.account = describe(a) + " overlaps " + yes(base);
+    for (const auto& [form, alt] : forms) {
+      const bool got = overlaps(alt, x);
+      v.account += "; as " + form + " " + yes(got);
+      if (oracle::overlaps(alt, x) != base_exact) {
+        fail(v, "the same point set as " + form + " (oracle agrees)", "oracle differs: " + describe(alt),
+             pair_text(a, x));
+        return;
+      }
+      if (got != base) {
+        const double tol = std::max(overlap_tolerance(a, x), overlap_tolerance(alt, x));
+        allow_in_band(v, a, x, tol, "as " + form + " the answer differs");
+        if (!v.ok) return;
+      }
+    }
+    if (!skipped.empty()) v.account += "; skipped:" + skipped;
+  });
+}
+
+template <Scalar T>
+Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool got = overlaps(a, b);
+    const auto c = contact(a, b);
+    if (bool(c) != got) {
+      fail(v, "contact exists exactly when overlaps (" + yes(got) + ")", "contact " + yes(bool(c)), pair_text(a, b));
+      return;
+    }
+    if (!c) {
+      v.account = "no overlap, no contact";
+      return;
+    }
+    const double tol = overlap_tolerance(a, b);
+    const double depth = c->depth;
+    const Vec2c n = c->normal.template cast<double>();
+    v.account = "contact normal " + vec(c->normal) + " depth " + num(depth) + " points " + std::to_string(c->count);
+    if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) {
+      fail(v, "a unit normal", "|normal| = " + num(n.norm()), pair_text(a, b));
+      return;
+    }
+    if (!(depth >= 0) || !std::isfinite(depth) || c->count < 1 || c->count > 2) {
+      fail(v, "finite depth >= 0 and 1 or 2 points", "depth " + num(depth) + ", count " + std::to_string(c->count),
+           pair_text(a, b));
+      return;
+    }
+    const double bound = 4 * tol + 4 * detail::eps<T>() * depth;
+    if (!detail::is_compound(a) && !detail::is_compound(b)) {
+      const bool too_deep = depth - bound > 0 && oracle::compare_depth(a, b, depth - bound) < 0;
+      const bool too_shallow = oracle::compare_depth(a, b, depth + bound) > 0;
+      if (too_deep || too_shallow) {
+        fail(v, "depth within " + num(bound) + " of the exact depth",
+             "depth " + num(depth) + ", exact ~" + num(-oracle::approx_signed_distance(a, b)), pair_text(a, b));
+        return;
+      }
+    } else {
+      v.account += "; compound: depth not compared (no exact depth)";
+    }
+    // Each point lies within depth + bound of both shapes (plus its own rounding to T).
+    const double scale = std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
+    const double reach = depth + bound + 2 * detail::eps<T>() * scale;
+    for (int i = 0; i < c->count; ++i) {
+      const Vec2c p = c->points[std::size_t(i)].template cast<double>();
+      for (const Shape<T>* s : {&a, &b}) {
+        if (oracle::contains(*s, p)) continue;
+        if (oracle::compare_distance(*s, Shape<double>(Circle<double>(p, 0.0)), reach) > 0) {
+          fail(v, "contact point within " + num(reach) + " of both shapes",
+               "point " + vec(c->points[std::size_t(i)]) + " is farther from " + describe(*s), pair_text(a, b));
+          return;
+        }
+      }
+    }
+  });
+}
+
+template <Scalar T>
+Verdict distance_law(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool got = overlaps(a, b);
+    const double d = distance(a, b);
+    v.account = "overlaps " + yes(got) + ", distance " + num(d);
+    if (got) {
+      if (d != 0) fail(v, "distance 0 when overlapping", "distance " + num(d), pair_text(a, b));
+      return;
+    }
+    if (!(d >= 0) || !std::isfinite(d)) {
+      fail(v, "finite distance >= 0", "distance " + num(d), pair_text(a, b));
+      return;
+    }
+    // Plus the rounding of the result to T (absolute near T's subnormals).
+    const double bound = 4 * overlap_tolerance(a, b) + 4 * detail::eps<T>() * d +
+                         2 * double(std::numeric_limits<T>::denorm_min());
+    const bool too_far = oracle::compare_distance(a, b, d - bound) < 0;    // gap < d - bound
+    const bool too_near = oracle::compare_distance(a, b, d + bound) > 0;   // gap > d + bound
+    if (too_far || too_near) {
+      fail(v, "distance within " + num(bound) + " of the exact gap",
+           "distance " + num(d) + ", exact ~" + num(oracle::approx_signed_distance(a, b)), pair_text(a, b));
+    }
+  });
+}
+
+#define COLLIDE_LAWS_INSTANTIATE(T)                                                       \
+  template Verdict agreement<T>(const Shape<T>&, const Shape<T>&);                       \
+  template Verdict symmetry<T>(const Shape<T>&, const Shape<T>&);                        \
+  template Verdict translation<T>(const Shape<T>&, const Shape<T>&, const Vec2<T>&);     \
+  template Verdict rotation<T>(const Shape<T>&, const Shape<T>&, int, bool);             \
+  template Verdict resolution<T>(const Shape<T>&, const Shape<T>&);                      \
+  template Verdict hierarchy<T>(const Shape<T>&, const Shape<T>&);                       \
+  template Verdict representation<T>(const Shape<T>&, const Shape<T>&);                  \
+  template Verdict contact_law<T>(const Shape<T>&, const Shape<T>&);                     \
+  template Verdict distance_law<T>(const Shape<T>&, const Shape<T>&);
+
+COLLIDE_LAWS_INSTANTIATE(float)
+COLLIDE_LAWS_INSTANTIATE(double)
+
+}  // namespace collide::laws

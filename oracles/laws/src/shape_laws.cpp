@@ -1,0 +1,194 @@
+// The laws on one shape: bounds are conservative; raycasts hit the boundary first.
+
+#include "support.hpp"
+
+#if __has_include("collide/raycast.hpp")
+#include "collide/raycast.hpp"
+#define COLLIDE_LAWS_HAVE_RAYCAST 1
+#endif
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace collide::laws {
+
+using detail::describe;
+using detail::num;
+using detail::vec;
+
+template <Scalar T>
+Verdict bounds_law(const Shape<T>& s) {
+  Verdict v;
+  try {
+    const Aabb<T> box = bounds(s);
+    v.account = "bounds " + describe(box);
+    if (!oracle::inside_box(s, box)) {
+      v.ok = false;
+      v.expected = "shape inside its bounds";
+      v.got = "part of the shape outside " + describe(box);
+      v.account = "expected " + v.expected + "; got " + v.got + "; s = " + describe(s);
+    }
+  } catch (const std::exception& e) {
+    v.ok = false;
+    v.expected = "no exception";
+    v.got = e.what();
+    v.account = std::string("exception: ") + e.what() + "; s = " + describe(s);
+  }
+  return v;
+}
+
+namespace {
+
+/// The primitive shrunk by at least e (its points deeper than e), or nothing when that is empty or
+/// not built here (polygons). Used for the raycast contract: a ray must not pass a point deeper
+/// than the bound inside the shape before its hit.
+template <Scalar T>
+std::optional<Primitive<T>> eroded(const Primitive<T>& p, double e) {
+  auto less = [e](T v) -> std::optional<T> {
+    T r = T(double(v) - e);
+    if (double(r) > double(v) - e) r = std::nextafter(r, -std::numeric_limits<T>::infinity());
+    if (!(r > 0)) return std::nullopt;
+    return r;
+  };
+  return std::visit(
+      [&](const auto& s) -> std::optional<Primitive<T>> {
+        using S = std::remove_cvref_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Circle<T>>) {
+          const auto r = less(s.radius());
+          if (!r) return std::nullopt;
+          return Circle<T>(s.center(), *r);
+        } else if constexpr (std::is_same_v<S, Capsule<T>>) {
+          const auto r = less(s.radius());
+          if (!r) return std::nullopt;
+          return Capsule<T>(s.a(), s.b(), *r);
+        } else if constexpr (std::is_same_v<S, Obb<T>>) {
+          const auto hx = less(s.half_extents().x()), hy = less(s.half_extents().y());
+          if (!hx || !hy) return std::nullopt;
+          auto r = ::collide::detail::ObbAccess::with_axis_of<T>(s.center(), Vec2<T>(*hx, *hy), s);
+          if (!r) return std::nullopt;
+          return r.value();
+        } else if constexpr (std::is_same_v<S, Aabb<T>>) {
+          const Vec2<T> h = (s.max() - s.min()) / T(2);
+          const auto hx = less(h.x()), hy = less(h.y());
+          if (!hx || !hy) return std::nullopt;
+          Vec2<T> lo(T(double(s.min().x()) + e), T(double(s.min().y()) + e));
+          Vec2<T> hi(T(double(s.max().x()) - e), T(double(s.max().y()) - e));
+          for (int k = 0; k < 2; ++k) {
+            if (double(lo[k]) < double(s.min()[k]) + e) lo[k] = std::nextafter(lo[k], std::numeric_limits<T>::infinity());
+            if (double(hi[k]) > double(s.max()[k]) - e) hi[k] = std::nextafter(hi[k], -std::numeric_limits<T>::infinity());
+          }
+          auto r = Aabb<T>::make(lo, hi);
+          if (!r) return std::nullopt;
+          return r.value();
+        } else {
+          return std::nullopt;
+        }
+      },
+      p);
+}
+
+/// The segment [p, q] passes a point deeper than e inside s (checked on the erodable children).
+template <Scalar T>
+bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
+  std::vector<Primitive<T>> prims;
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    prims = c->children();
+  } else {
+    std::visit(
+        [&](const auto& x) {
+          using S = std::remove_cvref_t<decltype(x)>;
+          if constexpr (!std::is_same_v<S, Compound<T>>) prims.emplace_back(x);
+        },
+        s);
+  }
+  for (const Primitive<T>& pr : prims) {
+    const auto core = eroded(pr, e);
+    if (core && oracle::segment_meets(*core, p, q)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+template <Scalar T>
+Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
+  Verdict v;
+#if defined(COLLIDE_LAWS_HAVE_RAYCAST)
+  auto fail = [&](std::string expected, std::string got) {
+    v.ok = false;
+    v.expected = std::move(expected);
+    v.got = std::move(got);
+    v.account = "expected " + v.expected + "; got " + v.got + "; s = " + describe(s) + "; ray " + vec(ray.origin) +
+                " + t " + vec(ray.direction) + ", max_t " + num(max_t);
+  };
+  try {
+    const Vec2c o = ray.origin.template cast<double>(), d = ray.direction.template cast<double>();
+    const double len = d.norm();
+    // The library's own bound (raycast.hpp): rays within it of the shape may hit or miss.
+    const double bound = raycast_tolerance(s, Ray<T>{ray.origin, ray.direction});
+    const auto hit = raycast(s, Ray<T>{ray.origin, ray.direction}, max_t);
+    const bool inside = oracle::contains(s, o);
+    v.relation = inside ? Relation::Contained : (hit ? Relation::Overlapping : Relation::Separated);
+    if (!hit) {
+      v.account = "no hit";
+      // Nothing within the segment shortened by the bound at its end.
+      const double shorten = len > 0 ? bound / len : 0;
+      const double t_end = double(max_t) - shorten;
+      if (inside && !(!detail::is_compound(s) && oracle::compare_boundary_distance(s, o, bound) <= 0)) {
+        fail("a hit at t = 0 (origin inside the shape, deeper than the bound)", "no hit");
+      } else if (t_end > 0 && passes_deep(s, o, Vec2c(o + d * t_end), bound)) {
+        fail("no point deeper than the bound on the segment to max_t", "no hit");
+      }
+      return v;
+    }
+    const double t = hit->t;
+    const Vec2c p = hit->point.template cast<double>();
+    v.account = "hit t " + num(t) + " at " + vec(hit->point);
+    if (!(t >= 0) || !(t <= double(max_t))) {
+      fail("0 <= t <= max_t", "t " + num(t));
+      return v;
+    }
+    if (inside) {
+      if (t != 0 && !(!detail::is_compound(s) && oracle::compare_boundary_distance(s, o, bound) <= 0))
+        fail("t = 0 for an origin inside the shape (deeper than the bound)", "t " + num(t));
+      return v;
+    }
+    if ((p - (o + d * t)).norm() > bound + 4 * detail::eps<T>() * t * len) {
+      fail("point = origin + t * direction", "point " + vec(hit->point));
+      return v;
+    }
+    if (oracle::compare_distance(s, Shape<double>(Circle<double>(p, 0.0)), bound) > 0) {
+      fail("hit point within " + num(bound) + " of the shape", "point " + vec(hit->point));
+      return v;
+    }
+    const double t_early = t - (len > 0 ? bound / len : 0);
+    if (t_early > 0 && passes_deep(s, o, Vec2c(o + d * t_early), bound)) {
+      fail("no point deeper than the bound before t", "the shape meets the ray before t " + num(t_early));
+      return v;
+    }
+  } catch (const std::exception& e) {
+    v.ok = false;
+    v.expected = "no exception";
+    v.got = e.what();
+    v.account = std::string("exception: ") + e.what() + "; s = " + describe(s);
+  }
+#else
+  (void)s;
+  (void)ray;
+  (void)max_t;
+  v.ok = false;
+  v.expected = "collide/raycast.hpp";
+  v.got = "the library has no raycast yet";
+  v.account = "raycast law: the library has no raycast yet";
+#endif
+  return v;
+}
+
+template Verdict bounds_law<float>(const Shape<float>&);
+template Verdict bounds_law<double>(const Shape<double>&);
+template Verdict raycast_law<float>(const Shape<float>&, const RayInput<float>&, float);
+template Verdict raycast_law<double>(const Shape<double>&, const RayInput<double>&, double);
+
+}  // namespace collide::laws

@@ -1,0 +1,170 @@
+#pragma once
+// Helpers shared by the laws' translation units (not installed).
+
+#include "collide/collide.hpp"
+#include "collide/laws/laws.hpp"
+#include "collide/laws/transform.hpp"
+#include "collide/oracle/oracle.hpp"
+
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace collide::laws::detail {
+
+using ::collide::laws::turn;
+using ::collide::laws::turned;
+
+/// Shortest decimal that round-trips, for accounts.
+inline std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+/// Hex float: every bit, for case files.
+inline std::string hex(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%a", v);
+  return buf;
+}
+
+inline std::string yes(bool b) { return b ? "true" : "false"; }
+
+template <Scalar T>
+std::string vec(const Vec2<T>& v) {
+  // Appends (not "(" + string): g++ 12 warns falsely (-Wrestrict) on literal + temporary.
+  std::string out = "(";
+  out += num(double(v.x()));
+  out += ", ";
+  out += num(double(v.y()));
+  out += ")";
+  return out;
+}
+
+/// One-line decimal description of a primitive or shape.
+template <Scalar T>
+std::string describe(const Circle<T>& s) {
+  return "circle c=" + vec(s.center()) + " r=" + num(s.radius());
+}
+template <Scalar T>
+std::string describe(const Aabb<T>& s) {
+  return "aabb min=" + vec(s.min()) + " max=" + vec(s.max());
+}
+template <Scalar T>
+std::string describe(const Obb<T>& s) {
+  return "obb c=" + vec(s.center()) + " h=" + vec(s.half_extents()) + " u=" + vec(s.axis());
+}
+template <Scalar T>
+std::string describe(const Capsule<T>& s) {
+  return "capsule a=" + vec(s.a()) + " b=" + vec(s.b()) + " r=" + num(s.radius());
+}
+template <Scalar T>
+std::string describe(const ConvexPolygon<T>& s) {
+  std::string out = "polygon";
+  for (const Vec2<T>& p : s.vertices()) {
+    out += ' ';
+    out += vec(p);
+  }
+  return out;
+}
+template <Scalar T>
+std::string describe(const Compound<T>& s) {
+  std::string out = "compound{";
+  bool first = true;
+  for (const Primitive<T>& c : s.children()) {
+    out += first ? "" : "; ";
+    first = false;
+    out += std::visit([](const auto& x) { return describe(x); }, c);
+  }
+  return out + "}";
+}
+template <Scalar T>
+std::string describe(const Shape<T>& s) {
+  return std::visit([](const auto& x) { return describe(x); }, s);
+}
+template <Scalar T>
+std::string describe(const Primitive<T>& s) {
+  return std::visit([](const auto& x) { return describe(x); }, s);
+}
+
+template <Scalar T>
+constexpr double eps() {
+  return double(std::numeric_limits<T>::epsilon());
+}
+
+template <Scalar T>
+bool is_compound(const Shape<T>& s) {
+  return std::holds_alternative<Compound<T>>(s);
+}
+
+/// Exact sum test: a + t rounds to exactly r with no rounding error (computed in double, where
+/// float sums are exact unless the exponents are far apart; the two-sum error catches that).
+inline bool exact_sum(double a, double t, double r) {
+  const double s = a + t;
+  const double bb = s - a;
+  const double err = (a - (s - bb)) + (t - bb);
+  return err == 0 && s == r;
+}
+
+/// The stored positions of a primitive (centres, corners, end points, vertices), and the
+/// shape-only values (radii, extents, axes) separately.
+template <Scalar T>
+void positions(const Primitive<T>& p, std::vector<Vec2<T>>& pos, std::vector<T>& other) {
+  std::visit(
+      [&](const auto& s) {
+        using S = std::remove_cvref_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Circle<T>>) {
+          pos.push_back(s.center());
+          other.push_back(s.radius());
+        } else if constexpr (std::is_same_v<S, Aabb<T>>) {
+          pos.push_back(s.min());
+          pos.push_back(s.max());
+        } else if constexpr (std::is_same_v<S, Obb<T>>) {
+          pos.push_back(s.center());
+          other.insert(other.end(), {s.half_extents().x(), s.half_extents().y(), s.axis().x(), s.axis().y()});
+        } else if constexpr (std::is_same_v<S, Capsule<T>>) {
+          pos.push_back(s.a());
+          pos.push_back(s.b());
+          other.push_back(s.radius());
+        } else {
+          for (const Vec2<T>& q : s.vertices()) pos.push_back(q);
+          other.push_back(T(s.size()));
+        }
+      },
+      p);
+}
+
+template <Scalar T>
+void positions(const Shape<T>& s, std::vector<Vec2<T>>& pos, std::vector<T>& other) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    for (const Primitive<T>& p : c->children()) positions(p, pos, other);
+    return;
+  }
+  std::visit(
+      [&](const auto& x) {
+        using S = std::remove_cvref_t<decltype(x)>;
+        if constexpr (!std::is_same_v<S, Compound<T>>) positions(Primitive<T>(x), pos, other);
+      },
+      s);
+}
+
+/// moved is exactly s with every position moved by t (no rounding anywhere).
+template <Scalar T>
+bool exact_move(const Shape<T>& s, const Shape<T>& moved, const Vec2<T>& t) {
+  std::vector<Vec2<T>> p0, p1;
+  std::vector<T> o0, o1;
+  positions(s, p0, o0);
+  positions(moved, p1, o1);
+  if (p0.size() != p1.size() || o0 != o1) return false;
+  for (std::size_t i = 0; i < p0.size(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      if (!exact_sum(double(p0[i][k]), double(t[k]), double(p1[i][k]))) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace collide::laws::detail

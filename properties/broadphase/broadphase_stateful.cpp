@@ -1,0 +1,476 @@
+// Model-based (stateful) properties of the three broadphase structures: random sequences of
+// add / move / remove / query / raycast / pairs, checked against a brute-force model, and the
+// three structures against each other. Both scalars. Plus the world helper against all-pairs.
+
+#include "collide/broadphase.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+#include <rapidcheck/state.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace bp = collide::broadphase;
+using collide::Aabb;
+using collide::Vec2;
+
+namespace {
+
+/// Counters printed at the end, so a run shows what it exercised.
+struct Stats {
+  std::atomic<long> commands{0}, pairs_checked{0}, touching_pairs{0}, queries{0}, rays{0}, ray_hits{0},
+      errors_checked{0}, sequences{0};
+};
+Stats g_stats;
+
+template <class T>
+struct Entry {
+  bp::Box<T> box;
+  bool live = true;
+};
+template <class T>
+using Model = std::vector<Entry<T>>;
+
+/// The system under test: all three structures fed the same commands; user data = model index.
+template <class T>
+struct Sut {
+  bp::DynamicTree<T> tree{T(0.5)};
+  bp::SweepAndPrune<T> sweep;
+  bp::UniformGrid<T> grid{T(1)};
+  std::vector<bp::ProxyId> tree_id, sweep_id, grid_id;
+};
+
+/// Dyadic coordinates on a half-unit lattice (many exact touches), sometimes far away or huge,
+/// so the grid's oversized list and large magnitudes are exercised.
+template <class T>
+rc::Gen<bp::Box<T>> gen_box() {
+  const auto small = rc::gen::apply(
+      [](int x, int y, int w, int h) {
+        return bp::Box<T>{Vec2<T>(T(x) / 2, T(y) / 2), Vec2<T>(T(x + w) / 2, T(y + h) / 2)};
+      },
+      rc::gen::inRange(-16, 17), rc::gen::inRange(-16, 17), rc::gen::inRange(0, 7), rc::gen::inRange(0, 7));
+  const auto big = rc::gen::apply(
+      [](int x, int y, int e) {
+        const T s = std::ldexp(T(1), e);  // up to 2^100: beyond the grid's hashed range
+        return bp::Box<T>{Vec2<T>(T(x) / 2 - s, T(y) / 2), Vec2<T>(T(x) / 2 + s, T(y) / 2 + s)};
+      },
+      rc::gen::inRange(-16, 17), rc::gen::inRange(-16, 17), rc::gen::inRange(1, 101));
+  return rc::gen::weightedOneOf<bp::Box<T>>({{9, small}, {1, big}});
+}
+
+template <class T>
+Aabb<T> to_aabb(const bp::Box<T>& b) {
+  return Aabb<T>(b.min, b.max);
+}
+
+// Plain bools for RC_PRE: its expression capture would evaluate both sides of an &&.
+template <class T>
+bool is_live(const Model<T>& m, std::size_t k) {
+  return k < m.size() && m[k].live;
+}
+template <class T>
+bool is_dead(const Model<T>& m, std::size_t k) {
+  return k < m.size() && !m[k].live;
+}
+
+template <class T>
+std::vector<std::size_t> live_indices(const Model<T>& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m[i].live) out.push_back(i);
+  return out;
+}
+
+template <class T>
+std::vector<std::size_t> dead_indices(const Model<T>& m) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (!m[i].live) out.push_back(i);
+  return out;
+}
+
+/// Maps a structure's pair list to model indices (each pair (lo, hi)), keeping order.
+template <class B>
+std::vector<std::pair<std::size_t, std::size_t>> to_model(const B& b, const std::vector<bp::ProxyPair>& pairs) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (const auto& p : pairs) {
+    std::size_t x = b.user_data(p.a), y = b.user_data(p.b);
+    RC_ASSERT(p.a.index < p.b.index);
+    out.emplace_back(std::min(x, y), std::max(x, y));
+  }
+  return out;
+}
+
+template <class T>
+bool only_touching(const bp::Box<T>& a, const bp::Box<T>& b) {
+  return a.max.x() == b.min.x() || b.max.x() == a.min.x() || a.max.y() == b.min.y() || b.max.y() == a.min.y();
+}
+
+template <class T>
+struct Add : rc::state::Command<Model<T>, Sut<T>> {
+  bp::Box<T> box = *gen_box<T>();
+  void apply(Model<T>& m) const override { m.push_back({box, true}); }
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    const std::uint64_t k = m.size();
+    s.tree_id.push_back(s.tree.add(to_aabb(box), k));
+    s.sweep_id.push_back(s.sweep.add(to_aabb(box), k));
+    s.grid_id.push_back(s.grid.add(box.min, box.max, k));  // the raw-corner overload
+    RC_ASSERT(s.tree.user_data(s.tree_id.back()) == k);
+    RC_ASSERT(s.grid.box(s.grid_id.back()).max() == box.max);
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override {
+    os << "Add(" << box.min.transpose() << " / " << box.max.transpose() << ")";
+  }
+};
+
+template <class T>
+struct Move : rc::state::Command<Model<T>, Sut<T>> {
+  explicit Move(const Model<T>& m) {
+    const auto live = live_indices(m);
+    RC_PRE(!live.empty());
+    k = *rc::gen::elementOf(live);
+    // Mostly small coherent steps, sometimes a jump anywhere.
+    box = *rc::gen::weightedOneOf<bp::Box<T>>(
+        {{3, rc::gen::apply(
+                 [b = m[k].box](int dx, int dy) {
+                   const Vec2<T> d(T(dx) / 4, T(dy) / 4);
+                   return bp::Box<T>{b.min + d, b.max + d};
+                 },
+                 rc::gen::inRange(-3, 4), rc::gen::inRange(-3, 4))},
+         {1, gen_box<T>()}});
+  }
+  std::size_t k = 0;
+  bp::Box<T> box;
+  void checkPreconditions(const Model<T>& m) const override { RC_PRE(is_live(m, k)); }
+  void apply(Model<T>& m) const override { m[k].box = box; }
+  void run(const Model<T>&, Sut<T>& s) const override {
+    s.tree.move(s.tree_id[k], to_aabb(box));
+    s.sweep.move(s.sweep_id[k], box.min, box.max);
+    s.grid.move(s.grid_id[k], to_aabb(box));
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override {
+    os << "Move(" << k << ", " << box.min.transpose() << " / " << box.max.transpose() << ")";
+  }
+};
+
+template <class T>
+struct Remove : rc::state::Command<Model<T>, Sut<T>> {
+  explicit Remove(const Model<T>& m) {
+    const auto live = live_indices(m);
+    RC_PRE(!live.empty());
+    k = *rc::gen::elementOf(live);
+  }
+  std::size_t k = 0;
+  void checkPreconditions(const Model<T>& m) const override { RC_PRE(is_live(m, k)); }
+  void apply(Model<T>& m) const override { m[k].live = false; }
+  void run(const Model<T>&, Sut<T>& s) const override {
+    s.tree.remove(s.tree_id[k]);
+    s.sweep.remove(s.sweep_id[k]);
+    s.grid.remove(s.grid_id[k]);
+    RC_ASSERT(!s.tree.contains(s.tree_id[k]));
+    RC_ASSERT(!s.sweep.contains(s.sweep_id[k]));
+    RC_ASSERT(!s.grid.contains(s.grid_id[k]));
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override { os << "Remove(" << k << ")"; }
+};
+
+/// Every operation on a removed proxy's handle is refused with InvalidProxy and changes nothing.
+template <class T>
+struct UseStale : rc::state::Command<Model<T>, Sut<T>> {
+  explicit UseStale(const Model<T>& m) {
+    const auto dead = dead_indices(m);
+    RC_PRE(!dead.empty());
+    k = *rc::gen::elementOf(dead);
+  }
+  std::size_t k = 0;
+  void checkPreconditions(const Model<T>& m) const override { RC_PRE(is_dead(m, k)); }
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    const auto expect_invalid = [](auto&& f) {
+      try {
+        f();
+      } catch (const bp::BroadphaseError& e) {
+        RC_ASSERT(e.code() == bp::BroadphaseErrc::InvalidProxy);
+        ++g_stats.errors_checked;
+        return;
+      }
+      RC_FAIL("stale handle accepted");
+    };
+    const Aabb<T> b = to_aabb(m[k].box);
+    expect_invalid([&] { s.tree.move(s.tree_id[k], b); });
+    expect_invalid([&] { s.sweep.remove(s.sweep_id[k]); });
+    expect_invalid([&] { s.grid.user_data(s.grid_id[k]); });
+    expect_invalid([&] { s.tree.remove(s.tree_id[k]); });
+    expect_invalid([&] { s.sweep.move(s.sweep_id[k], b); });
+    expect_invalid([&] { s.grid.move(s.grid_id[k], b.min(), b.max()); });
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override { os << "UseStale(" << k << ")"; }
+};
+
+/// Raw corners that are NaN, infinite or inverted are refused with BadBox and add nothing.
+template <class T>
+struct AddBad : rc::state::Command<Model<T>, Sut<T>> {
+  int which = *rc::gen::inRange(0, 3);
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>&, Sut<T>& s) const override {
+    const T bad = which == 0 ? std::numeric_limits<T>::quiet_NaN()
+                             : which == 1 ? std::numeric_limits<T>::infinity() : T(-5);
+    const std::size_t n = s.tree.size();
+    for (int target = 0; target < 3; ++target) {
+      try {
+        const Vec2<T> lo(T(0), T(0)), hi(bad, T(1));
+        if (target == 0) s.tree.add(lo, hi);
+        if (target == 1) s.sweep.add(lo, hi);
+        if (target == 2) s.grid.add(lo, hi);
+        RC_FAIL("bad box accepted");
+      } catch (const bp::BroadphaseError& e) {
+        RC_ASSERT(e.code() == bp::BroadphaseErrc::BadBox);
+        ++g_stats.errors_checked;
+      }
+    }
+    RC_ASSERT(s.tree.size() == n && s.sweep.size() == n && s.grid.size() == n);
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override { os << "AddBad(" << which << ")"; }
+};
+
+template <class T>
+struct Query : rc::state::Command<Model<T>, Sut<T>> {
+  bp::Box<T> q = *gen_box<T>();
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    std::vector<std::size_t> expected;
+    for (std::size_t i = 0; i < m.size(); ++i)
+      if (m[i].live && bp::boxes_overlap(m[i].box, q)) expected.push_back(i);
+    const auto collect = [&](const auto& b) {
+      std::vector<std::size_t> got;
+      b.query(to_aabb(q), [&](bp::ProxyId id) { got.push_back(b.user_data(id)); });
+      std::sort(got.begin(), got.end());  // duplicates stay and fail the comparison
+      return got;
+    };
+    RC_ASSERT(collect(s.tree) == expected);
+    RC_ASSERT(collect(s.sweep) == expected);
+    RC_ASSERT(collect(s.grid) == expected);
+    ++g_stats.queries;
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override {
+    os << "Query(" << q.min.transpose() << " / " << q.max.transpose() << ")";
+  }
+};
+
+template <class T>
+struct Raycast : rc::state::Command<Model<T>, Sut<T>> {
+  Vec2<T> origin = Vec2<T>(T(*rc::gen::inRange(-20, 21)) / 2, T(*rc::gen::inRange(-20, 21)) / 2);
+  Vec2<T> direction = Vec2<T>(T(*rc::gen::inRange(-8, 9)) * 2, T(*rc::gen::inRange(-8, 9)) * 2);
+  T max_t = T(*rc::gen::inRange(0, 5)) / 2;
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    const bp::RaySegment<T> r = bp::make_ray(origin, direction, max_t);
+    std::vector<std::size_t> expected;
+    for (std::size_t i = 0; i < m.size(); ++i)
+      if (m[i].live && bp::ray_hits_box(r, m[i].box) >= 0) expected.push_back(i);
+    const auto collect = [&](const auto& b) {
+      std::vector<std::size_t> got;
+      b.raycast(origin, direction, max_t, [&](bp::ProxyId id, collide::Calc t) {
+        const bool in_range = t >= 0 && t <= collide::Calc(max_t);
+        RC_ASSERT(in_range);
+        got.push_back(b.user_data(id));
+      });
+      std::sort(got.begin(), got.end());
+      return got;
+    };
+    RC_ASSERT(collect(s.tree) == expected);
+    RC_ASSERT(collect(s.sweep) == expected);
+    RC_ASSERT(collect(s.grid) == expected);
+    ++g_stats.rays;
+    g_stats.ray_hits += long(expected.size());
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override {
+    os << "Raycast(" << origin.transpose() << " + t " << direction.transpose() << ", t <= " << max_t << ")";
+  }
+};
+
+template <class T>
+struct Pairs : rc::state::Command<Model<T>, Sut<T>> {
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    std::vector<std::pair<std::size_t, std::size_t>> expected;
+    long touching = 0;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      for (std::size_t j = i + 1; j < m.size(); ++j) {
+        if (!m[i].live || !m[j].live || !bp::boxes_overlap(m[i].box, m[j].box)) continue;
+        expected.emplace_back(i, j);
+        touching += only_touching(m[i].box, m[j].box) ? 1 : 0;
+      }
+    }
+    const auto check = [&](const auto& b) {
+      // Sorted order: identical list (ids ascending by slot), each pair once.
+      const auto sorted = b.pairs(bp::PairOrder::Sorted);
+      RC_ASSERT(std::is_sorted(sorted.begin(), sorted.end()));
+      auto got = to_model(b, sorted);
+      std::sort(got.begin(), got.end());
+      RC_ASSERT(got == expected);
+      auto any = to_model(b, b.pairs());
+      std::sort(any.begin(), any.end());
+      RC_ASSERT(any == expected);
+      return sorted;
+    };
+    const auto t = check(s.tree), w = check(s.sweep), g = check(s.grid);
+    RC_ASSERT(to_model(s.tree, t) == to_model(s.sweep, w));
+    RC_ASSERT(to_model(s.tree, t) == to_model(s.grid, g));
+    RC_ASSERT(s.tree.check_invariants());
+    // Pairs involving a subset: exactly the expected pairs touching it.
+    std::vector<std::size_t> subset;
+    for (std::size_t i = 0; i < m.size(); i += 2)
+      if (m[i].live) subset.push_back(i);
+    std::vector<bp::ProxyId> ids;
+    for (std::size_t i : subset) ids.push_back(s.sweep_id[i]);
+    auto inv = to_model(s.sweep, bp::pairs_involving(s.sweep, std::span<const bp::ProxyId>(ids)));
+    std::sort(inv.begin(), inv.end());
+    std::vector<std::pair<std::size_t, std::size_t>> want;
+    for (const auto& p : expected)
+      if (p.first % 2 == 0 || p.second % 2 == 0) want.push_back(p);
+    RC_ASSERT(inv == want);
+    g_stats.pairs_checked += long(expected.size());
+    g_stats.touching_pairs += touching;
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override { os << "Pairs"; }
+};
+
+template <class T>
+void check_stateful() {
+  Model<T> initial;
+  Sut<T> sut;
+  ++g_stats.sequences;
+  rc::state::check(initial, sut,
+                   rc::state::gen::execOneOfWithArgs<Add<T>, Add<T>, Add<T>, Move<T>, Move<T>, Remove<T>,
+                                                     UseStale<T>, AddBad<T>, Query<T>, Raycast<T>, Pairs<T>>());
+}
+
+template <class T>
+rc::Gen<collide::Shape<T>> gen_shape() {
+  using S = collide::Shape<T>;
+  const auto c = [](int v) { return T(v) / 4; };
+  return rc::gen::oneOf(
+      rc::gen::apply([c](int x, int y, int r) { return S(collide::Circle<T>(Vec2<T>(c(x), c(y)), c(r))); },
+                     rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(0, 12)),
+      rc::gen::apply(
+          [c](int x, int y, int w, int h) {
+            return S(collide::Aabb<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + w), c(y + h))));
+          },
+          rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(0, 16), rc::gen::inRange(0, 16)),
+      rc::gen::apply(
+          [c](int x, int y, int dx, int dy, int r) {
+            return S(collide::Capsule<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + dx), c(y + dy)), c(r)));
+          },
+          rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(-8, 9), rc::gen::inRange(-8, 9),
+          rc::gen::inRange(0, 6)));
+}
+
+/// The world helper finds exactly the pairs that all-pairs overlaps() finds, with each structure.
+template <class T>
+void check_world(const std::vector<collide::Shape<T>>& shapes) {
+  std::vector<bp::ShapePair> expected;
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    for (std::size_t j = i + 1; j < shapes.size(); ++j)
+      if (collide::overlaps(shapes[i], shapes[j])) expected.push_back({i, j});
+  const std::span<const collide::Shape<T>> s(shapes);
+  RC_ASSERT(bp::find_overlapping_shapes<T>(s) == expected);
+  RC_ASSERT((bp::find_overlapping_shapes<T, bp::SweepAndPrune<T>>(s)) == expected);
+  RC_ASSERT((bp::find_overlapping_shapes<T, bp::UniformGrid<T>>(s, bp::UniformGrid<T>(T(2)))) == expected);
+  const auto contacts = bp::find_contacts<T>(s);
+  RC_ASSERT(contacts.size() == expected.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i)
+    RC_ASSERT(contacts[i].a == expected[i].a && contacts[i].b == expected[i].b);
+  RC_CLASSIFY(!expected.empty(), "some overlap");
+}
+
+/// The world raycast finds the same nearest shape as casting against every shape.
+template <class T>
+void check_world_ray(const std::vector<collide::Shape<T>>& shapes, const Vec2<T>& origin, const Vec2<T>& direction,
+                     T max_t) {
+  const collide::Ray<T> ray{origin, direction};
+  std::optional<bp::ShapeHit<T>> expected;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    const auto h = collide::raycast(shapes[i], ray, max_t);
+    if (h && (!expected || h->t < expected->hit.t)) expected = bp::ShapeHit<T>{i, *h};
+  }
+  const std::span<const collide::Shape<T>> s(shapes);
+  const auto check = [&](const std::optional<bp::ShapeHit<T>>& got) {
+    RC_ASSERT(got.has_value() == expected.has_value());
+    if (got) {
+      RC_ASSERT(got->index == expected->index);
+      RC_ASSERT(got->hit.t == expected->hit.t);
+    }
+  };
+  check(bp::raycast_shapes<T>(s, ray, max_t));
+  check(bp::raycast_shapes<T, bp::SweepAndPrune<T>>(s, ray, max_t));
+  check(bp::raycast_shapes<T, bp::UniformGrid<T>>(s, ray, max_t, bp::UniformGrid<T>(T(2))));
+  RC_CLASSIFY(expected.has_value(), "hit");
+}
+
+}  // namespace
+
+RC_GTEST_PROP(BroadphaseStateful, FloatMatchesBruteForceModel, ()) { check_stateful<float>(); }
+RC_GTEST_PROP(BroadphaseStateful, DoubleMatchesBruteForceModel, ()) { check_stateful<double>(); }
+
+RC_GTEST_PROP(BroadphaseWorld, FloatSameAsAllPairs, ()) {
+  check_world<float>(*rc::gen::container<std::vector<collide::Shape<float>>>(gen_shape<float>()));
+}
+RC_GTEST_PROP(BroadphaseWorld, DoubleSameAsAllPairs, ()) {
+  check_world<double>(*rc::gen::container<std::vector<collide::Shape<double>>>(gen_shape<double>()));
+}
+
+template <class T>
+void world_ray_property() {
+  const auto shapes = *rc::gen::container<std::vector<collide::Shape<T>>>(gen_shape<T>());
+  const Vec2<T> o(T(*rc::gen::inRange(-48, 49)) / 4, T(*rc::gen::inRange(-48, 49)) / 4);
+  const Vec2<T> d(T(*rc::gen::inRange(-16, 17)) / 2, T(*rc::gen::inRange(-16, 17)) / 2);
+  check_world_ray<T>(shapes, o, d, T(*rc::gen::inRange(0, 9)) / 2);
+}
+RC_GTEST_PROP(BroadphaseWorld, FloatRaycastSameAsEveryShape, ()) { world_ray_property<float>(); }
+RC_GTEST_PROP(BroadphaseWorld, DoubleRaycastSameAsEveryShape, ()) { world_ray_property<double>(); }
+
+TEST(BroadphaseErrors, NamedErrorsForBadConfiguration) {
+  EXPECT_THROW(bp::DynamicTree<float>(-1.0f), bp::BroadphaseError);
+  EXPECT_THROW(bp::UniformGrid<double>(0.0), bp::BroadphaseError);
+  try {
+    bp::UniformGrid<float> g(std::numeric_limits<float>::quiet_NaN());
+    FAIL() << "NaN cell size accepted";
+  } catch (const bp::BroadphaseError& e) {
+    EXPECT_EQ(e.code(), bp::BroadphaseErrc::BadCellSize);
+  }
+  bp::SweepAndPrune<double> s;
+  try {
+    s.raycast(Vec2<double>(0, 0), Vec2<double>(std::nan(""), 1), 1.0, [](bp::ProxyId, double) {});
+    FAIL() << "NaN ray accepted";
+  } catch (const bp::BroadphaseError& e) {
+    EXPECT_EQ(e.code(), bp::BroadphaseErrc::BadRay);
+  }
+  EXPECT_THROW(s.remove(bp::ProxyId{}), bp::BroadphaseError);
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  const int rc = RUN_ALL_TESTS();
+  std::cout << "broadphase stats: sequences=" << g_stats.sequences << " commands=" << g_stats.commands
+            << " pair_checks=" << g_stats.pairs_checked << " touching_pairs=" << g_stats.touching_pairs
+            << " queries=" << g_stats.queries << " rays=" << g_stats.rays << " ray_hits=" << g_stats.ray_hits
+            << " named_errors=" << g_stats.errors_checked << "\n";
+  return rc;
+}

@@ -1,0 +1,267 @@
+#pragma once
+/// @file generators.hpp
+/// RapidCheck generators for shapes and pairs, aimed at the hard region.
+///
+/// Coordinates come from small integers times a power of two (exact dyadic values that shrink
+/// toward 0): RapidCheck's own double generator never produces the values that matter here.
+/// A pair is placed on purpose: separated, exactly touching along an axis (extreme points
+/// aligned), touching nudged by a few ulps either way, overlapping, or one shape shrunk inside
+/// the other; then the pair is turned by quarter turns. Shapes are sometimes tiny (2^-20) or huge
+/// (2^20), sometimes far from the origin (about 1e6), slivers (zero width, zero radius, thin
+/// triangles) and near-parallel edges (axes like (64, 1)). The kind of each shape is chosen
+/// through the registry (visit_kind).
+
+#include "collide/collide.hpp"
+#include "collide/laws/transform.hpp"
+
+#include <rapidcheck.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace collide::props {
+
+/// Integer in [lo, hi] mapped to a double (exact).
+inline double grid(int lo, int hi) { return double(*rc::gen::inRange(lo, hi + 1)); }
+
+/// A primitive of kind K at the given scale (coordinates = small integers * scale), built in T.
+template <ShapeKind K, Scalar T>
+Primitive<T> gen_primitive(double s) {
+  using V = Vec2<T>;
+  auto p = [&](int lo, int hi) { return V(T(grid(lo, hi) * s), T(grid(lo, hi) * s)); };
+  if constexpr (K == ShapeKind::Circle) {
+    return Circle<T>(p(-16, 16), T(grid(0, 16) * s));
+  } else if constexpr (K == ShapeKind::Aabb) {
+    const V lo = p(-16, 16);
+    const bool sliver = *rc::gen::inRange(0, 8) == 0;
+    const V size(T(grid(sliver ? 0 : 1, 16) * s), T(grid(1, 16) * s));
+    return Aabb<T>(lo, V(lo + size));
+  } else if constexpr (K == ShapeKind::Obb) {
+    // Axis-aligned half the time (exact corners, exact touching), else rotated, some nearly.
+    const std::vector<V> axes = {V(1, 0), V(0, 1), V(1, 0), V(0, 1), V(-1, 0), V(0, -1), V(3, 4), V(1, 1), V(64, 1), V(-1, 64), V(5, -12)};
+    const V axis = *rc::gen::elementOf(axes);
+    return Obb<T>::make_with_axis(p(-16, 16), V(T(grid(0, 8) * s), T(grid(1, 8) * s)), axis).value();
+  } else if constexpr (K == ShapeKind::Capsule) {
+    const V a = p(-16, 16);
+    const bool point = *rc::gen::inRange(0, 4) == 0;
+    const V b = point ? a : V(a + p(-8, 8));
+    return Capsule<T>(a, b, T(grid(0, 8) * s));
+  } else if constexpr (K == ShapeKind::Polygon) {
+    const int style = *rc::gen::inRange(0, 4);
+    std::vector<V> pts;
+    const V o = p(-16, 16);
+    if (style == 0) {
+      // Sliver triangle: nearly collinear.
+      pts = {o, V(o + V(T(64 * s), T(1 * s))), V(o + V(T(128 * s), T(3 * s)))};
+    } else if (style == 1) {
+      // Axis-aligned rectangle (also an AABB).
+      const V size(T(grid(1, 16) * s), T(grid(1, 16) * s));
+      pts = {o, V(o.x() + size.x(), o.y()), V(o + size), V(o.x(), o.y() + size.y())};
+    } else {
+      const int n = *rc::gen::inRange(3, 9);
+      for (int i = 0; i < n; ++i) pts.push_back(V(o + p(-12, 12)));
+    }
+    auto hull = ConvexPolygon<T>::make_hull(pts);
+    if (hull) return hull.value();
+    // All collinear (or rounded flat): a right triangle at o.
+    return ConvexPolygon<T>({o, V(o + V(T(4 * s), 0)), V(o + V(0, T(4 * s)))});
+  } else {
+    static_assert(K != ShapeKind::Compound, "compound children are primitives");
+    return Circle<T>(V(0, 0), T(0));
+  }
+}
+
+/// A primitive of a kind chosen among the five, through the registry.
+template <Scalar T>
+Primitive<T> gen_any_primitive(double s) {
+  const auto k = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
+  return visit_kind(k, [&]<ShapeKind K>() -> Primitive<T> {
+    if constexpr (K == ShapeKind::Compound) {
+      return gen_primitive<ShapeKind::Circle, T>(s);
+    } else {
+      return gen_primitive<K, T>(s);
+    }
+  });
+}
+
+/// A shape of kind K at scale s. A compound has 1 to 3 children of any primitive kind.
+template <ShapeKind K, Scalar T>
+Shape<T> gen_shape(double s) {
+  if constexpr (K == ShapeKind::Compound) {
+    const int n = *rc::gen::inRange(1, 4);
+    std::vector<Primitive<T>> children;
+    for (int i = 0; i < n; ++i) children.push_back(gen_any_primitive<T>(s));
+    return Compound<T>(std::move(children));
+  } else {
+    return to_shape(gen_primitive<K, T>(s));
+  }
+}
+
+/// Shape of a kind known at run time (dispatched through the registry).
+template <Scalar T>
+Shape<T> gen_shape_of(ShapeKind k, double s) {
+  return visit_kind(k, [&]<ShapeKind K>() { return gen_shape<K, T>(s); });
+}
+
+/// Extreme point of a shape in direction +x (sign = +1) or -x (sign = -1): x and a y where the
+/// shape reaches it. Exact for everything but rotated OBBs (rounded corners).
+template <Scalar T>
+Vec2c extreme_x(const Primitive<T>& p, int sign) {
+  const ::collide::detail::Core core = std::visit([](const auto& s) { return ::collide::detail::core_of(s); }, p);
+  Vec2c best = core[0];
+  for (const Vec2c& q : core.pts()) {
+    if (sign * q.x() > sign * best.x()) best = q;
+  }
+  return {best.x() + sign * core.radius, best.y()};
+}
+
+template <Scalar T>
+Vec2c extreme_x(const Shape<T>& s, int sign) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    Vec2c best = extreme_x(c->children().front(), sign);
+    for (const Primitive<T>& p : c->children()) {
+      const Vec2c q = extreme_x(p, sign);
+      if (sign * q.x() > sign * best.x()) best = q;
+    }
+    return best;
+  }
+  return std::visit(
+      [&](const auto& x) -> Vec2c {
+        using S = std::remove_cvref_t<decltype(x)>;
+        if constexpr (std::is_same_v<S, Compound<T>>) {
+          return {};
+        } else {
+          return extreme_x(Primitive<T>(x), sign);
+        }
+      },
+      s);
+}
+
+/// A point inside the shape (a core vertex average of its first primitive).
+template <Scalar T>
+Vec2c inner_point(const Shape<T>& s) {
+  const Primitive<T> first = [&]() -> Primitive<T> {
+    if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children().front();
+    return std::visit(
+        [](const auto& x) -> Primitive<T> {
+          using S = std::remove_cvref_t<decltype(x)>;
+          if constexpr (std::is_same_v<S, Compound<T>>) {
+            return x.children().front();
+          } else {
+            return x;
+          }
+        },
+        s);
+  }();
+  const ::collide::detail::Core core = std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, first);
+  Vec2c m = Vec2c::Zero();
+  for (const Vec2c& q : core.pts()) m += q;
+  return m / double(core.size());
+}
+
+/// s moved by t, or s itself when the move is rejected (out of range, collapsed sliver).
+template <Scalar T>
+Shape<T> moved(const Shape<T>& s, const Vec2<T>& t) {
+  auto m = translated(s, t);
+  return m ? m.value() : s;
+}
+
+/// ulp of T at magnitude m.
+template <Scalar T>
+T ulp_at(double m) {
+  const T x = T(std::fabs(m));
+  return std::nextafter(x, std::numeric_limits<T>::infinity()) - x;
+}
+
+/// How the second shape is placed against the first.
+enum class Placement { Separated, Touching, Nudged, Overlapping, Contained };
+
+/// A pair of kinds (A, B) placed on purpose (see the file comment).
+template <Scalar T>
+std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb) {
+  using V = Vec2<T>;
+  const int e = *rc::gen::weightedElement<int>({{1, -20}, {1, -6}, {6, 0}, {1, 6}, {1, 20}});
+  const double s = std::ldexp(1.0, e);
+  const auto place = *rc::gen::weightedElement<Placement>({{1, Placement::Separated},
+                                                           {4, Placement::Touching},
+                                                           {2, Placement::Nudged},
+                                                           {2, Placement::Overlapping},
+                                                           {3, Placement::Contained}});
+  const bool b_moves = *rc::gen::arbitrary<bool>();  // which of the two is placed against the other
+  Shape<T> fixed = gen_shape_of<T>(b_moves ? ka : kb, s);
+  ShapeKind kmove = b_moves ? kb : ka;
+  Shape<T> mover = gen_shape_of<T>(kmove, place == Placement::Contained ? s / 64 : s);
+  V t(0, 0);
+  if (place == Placement::Contained) {
+    const Vec2c target = inner_point(fixed), from = inner_point(mover);
+    t = V(T(target.x() - from.x()), T(target.y() - from.y()));
+  } else {
+    const Vec2c xa = extreme_x(fixed, +1), xb = extreme_x(mover, -1);
+    t = V(T(xa.x() - xb.x()), T(xa.y() - xb.y()));
+    const bool shift_y = *rc::gen::inRange(0, 6) == 0;
+    if (shift_y) t.y() += T(grid(-4, 4) * s);
+    if (place == Placement::Separated) t.x() += T(grid(1, 16) * s / 8);
+    if (place == Placement::Overlapping) t.x() -= T(grid(1, 16) * s / 8);
+    if (place == Placement::Nudged) {
+      const double mag = std::max(std::fabs(xa.x()), std::fabs(xb.x()));
+      t.x() += T(*rc::gen::inRange(-4, 5)) * ulp_at<T>(mag);
+    }
+  }
+  mover = moved(mover, t);
+  // Far from the origin, sometimes: both moved by the same (exact) large offset.
+  if (*rc::gen::inRange(0, 6) == 0) {
+    const V far(T(1e6 + 64 * grid(-4, 4)), T(-1e6));
+    fixed = moved(fixed, far);
+    mover = moved(mover, far);
+  }
+  // Turn the pair (exact), so every axis direction is exercised.
+  const int k = *rc::gen::inRange(0, 4);
+  const bool mirror = *rc::gen::arbitrary<bool>();
+  fixed = laws::turned(fixed, k, mirror);
+  mover = laws::turned(mover, k, mirror);
+  if (b_moves) return {fixed, mover};
+  return {mover, fixed};
+}
+
+/// A translation: exact dyadic (small or large), or inexact (k / 3, rounded).
+template <Scalar T>
+Vec2<T> gen_translation(double s) {
+  const int style = *rc::gen::inRange(0, 3);
+  auto one = [&]() -> T {
+    if (style == 0) return T(grid(-64, 64) * s / 4);
+    if (style == 1) return T(grid(-64, 64) * 0x1p20);
+    return T(grid(-64, 64) * s / 3);
+  };
+  const T x = one();
+  const T y = one();
+  return Vec2<T>(x, y);
+}
+
+/// Raw values for the rejection law: bit patterns (NaN payloads, infinities, subnormals, huge),
+/// special values, and ordinary valid values mixed.
+template <Scalar T>
+T gen_raw_value() {
+  using Bits = std::conditional_t<std::is_same_v<T, float>, std::uint32_t, std::uint64_t>;
+  const int style = *rc::gen::inRange(0, 4);
+  if (style == 0) {
+    const Bits bits = *rc::gen::arbitrary<Bits>();
+    T v;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+  }
+  if (style == 1) {
+    const std::vector<T> special = {std::numeric_limits<T>::quiet_NaN(),   std::numeric_limits<T>::infinity(),
+                                    -std::numeric_limits<T>::infinity(),   std::numeric_limits<T>::denorm_min(),
+                                    -std::numeric_limits<T>::denorm_min(), T(-0.0),
+                                    std::numeric_limits<T>::max(),         max_magnitude<T>(),
+                                    T(max_magnitude<T>() * T(2)),          -T(1)};
+    return *rc::gen::elementOf(special);
+  }
+  return T(grid(-16, 16) / 4);
+}
+
+}  // namespace collide::props

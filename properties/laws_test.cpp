@@ -1,0 +1,291 @@
+/// The property suite: every law, for every pair of kinds from the registry and both scalars, as
+/// one GoogleTest test each (suite = law, name = <pair>_<scalar>), checked by RapidCheck.
+///
+/// Per test it records the cases, their exact relation (RC_CLASSIFY), disagreements within the
+/// band and failures; with COLLIDE_PROPS_REPORT set, one JSON line per test is appended there.
+/// A counterexample (RapidCheck's last, shrunk one) is saved as a case file + SVG under
+/// COLLIDE_CASES_DIR (default: the source tree's tests/regressions).
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "collide/laws/case_file.hpp"
+#include "collide/laws/laws.hpp"
+#include "generators.hpp"
+
+#include <array>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace collide::props {
+namespace {
+
+/// What one test saw.
+struct Tally {
+  long cases = 0;
+  std::array<long, 4> relations{};
+  long disagreements = 0;
+  bool failed = false;
+  std::optional<laws::Case> counterexample;  // the last failing input (after shrinking)
+
+  void record(const laws::Verdict& v, bool classify) {
+    if (failed) return;  // shrinking replays inputs: count only the search
+    ++cases;
+    if (classify) ++relations[static_cast<std::size_t>(v.relation)];
+    if (v.disagreement) ++disagreements;
+  }
+};
+
+Tally g_tally;
+
+std::string env_or(const char* key, const std::string& fallback) {
+  const char* v = std::getenv(key);
+  return v != nullptr && *v != '\0' ? std::string(v) : fallback;
+}
+
+/// The seed RapidCheck runs with (from RC_PARAMS), for the case file's source line.
+std::string seed_text() {
+  const std::string params = env_or("RC_PARAMS", "");
+  const auto at = params.find("seed=");
+  if (at == std::string::npos) return "seed random";
+  const auto end = params.find(' ', at);
+  return "seed " + params.substr(at + 5, end == std::string::npos ? std::string::npos : end - at - 5);
+}
+
+/// Checks a verdict inside a property: counts it, keeps the input when it fails, asserts.
+template <Scalar T>
+void judge(const laws::Verdict& v, const std::string& law, const std::string& pair, const Shape<T>& a,
+           const std::optional<Shape<T>>& b, bool classify, const std::function<void(laws::Case&)>& extra = {}) {
+  g_tally.record(v, classify);
+  if (classify) RC_CLASSIFY(true, std::string(laws::name(v.relation)));
+  if (v.disagreement) RC_TAG(std::string("disagreement"));
+  if (!v.ok) {
+    g_tally.failed = true;
+    const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
+    laws::Case c = laws::make_case<T>(law, a, b, v, "property " + law + " " + pair + " " + scalar + " " + seed_text());
+    if (extra) extra(c);
+    g_tally.counterexample = c;
+  }
+  if (!v.ok) RC_FAIL(v.account);
+}
+
+/// Saves the counterexample and writes the test's record.
+void finish(const std::string& law, const std::string& pair, const std::string& scalar) {
+  std::string saved;
+  if (g_tally.counterexample) {
+    try {
+      const std::filesystem::path dir = env_or("COLLIDE_CASES_DIR", COLLIDE_REGRESSIONS_DIR);
+      saved = laws::save_case(dir, *g_tally.counterexample).string();
+      std::cout << "counterexample saved: " << saved << std::endl;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "could not save the counterexample: " << e.what();
+    }
+  }
+  const std::string report = env_or("COLLIDE_PROPS_REPORT", "");
+  if (!report.empty()) {
+    std::ofstream out(report, std::ios::app);
+    out << "{\"law\": \"" << law << "\", \"pair\": \"" << pair << "\", \"scalar\": \"" << scalar
+        << "\", \"cases\": " << g_tally.cases;
+    for (std::size_t i = 0; i < 4; ++i)
+      out << ", \"" << laws::name(static_cast<laws::Relation>(i)) << "\": " << g_tally.relations[i];
+    out << ", \"disagreements\": " << g_tally.disagreements << ", \"failed\": " << (g_tally.failed ? "true" : "false")
+        << ", \"case_file\": \"" << saved << "\"}\n";
+  }
+}
+
+/// Every relation holds at least 10% of the cases (the generators aim at the boundary).
+void expect_distribution(const std::string& what) {
+  if (g_tally.failed || g_tally.cases < 50) return;
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_GE(10 * g_tally.relations[i], g_tally.cases)
+        << what << ": relation '" << laws::name(static_cast<laws::Relation>(i)) << "' has " << g_tally.relations[i]
+        << " of " << g_tally.cases << " cases (< 10%)";
+  }
+}
+
+template <Scalar T>
+void register_pair_laws(ShapeKind ka, ShapeKind kb) {
+  const std::string pair = name(make_pair(ka, kb));
+  const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
+  struct Entry {
+    std::string law;
+    bool distribution;
+    std::function<void()> property;
+  };
+  std::vector<Entry> entries;
+  auto simple = [&](const std::string& law, laws::Verdict (*f)(const Shape<T>&, const Shape<T>&)) {
+    entries.push_back({law, true, [=] {
+                         const auto [a, b] = gen_pair<T>(ka, kb);
+                         judge<T>(f(a, b), law, pair, a, b, true);
+                       }});
+  };
+  simple("agreement", &laws::agreement<T>);
+  simple("symmetry", &laws::symmetry<T>);
+  simple("resolution", &laws::resolution<T>);
+  simple("contact", &laws::contact_law<T>);
+  simple("distance", &laws::distance_law<T>);
+  entries.push_back({"translation", true, [=] {
+                       const auto [a, b] = gen_pair<T>(ka, kb);
+                       const Vec2<T> t = gen_translation<T>(1.0);
+                       judge<T>(laws::translation(a, b, t), "translation", pair, a, b, true, [=](laws::Case& c) {
+                         c.tx = t.x();
+                         c.ty = t.y();
+                       });
+                     }});
+  entries.push_back({"rotation", true, [=] {
+                       const auto [a, b] = gen_pair<T>(ka, kb);
+                       const int k = *rc::gen::inRange(0, 4);
+                       const bool mirror = *rc::gen::arbitrary<bool>();
+                       judge<T>(laws::rotation(a, b, k, mirror), "rotation", pair, a, b, true, [=](laws::Case& c) {
+                         c.quarter_turns = k;
+                         c.mirror = mirror;
+                       });
+                     }});
+  entries.push_back({"hierarchy", true, [=] {
+                       // The compound: a's primitives plus up to two more children nearby.
+                       const auto [a, b] = gen_pair<T>(ka, kb);
+                       std::vector<Primitive<T>> children;
+                       if (const auto* c = std::get_if<Compound<T>>(&a)) {
+                         children = c->children();
+                       } else {
+                         std::visit(
+                             [&](const auto& x) {
+                               using S = std::remove_cvref_t<decltype(x)>;
+                               if constexpr (!std::is_same_v<S, Compound<T>>) children.emplace_back(x);
+                             },
+                             a);
+                       }
+                       const int extra = *rc::gen::inRange(0, 3);
+                       for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
+                       const Shape<T> comp = Compound<T>(std::move(children));
+                       judge<T>(laws::hierarchy(comp, b), "hierarchy", pair, comp, b, true);
+                     }});
+  entries.push_back({"representation", true, [=] {
+                       const auto [a, b] = gen_pair<T>(ka, kb);
+                       const bool first = *rc::gen::arbitrary<bool>();
+                       judge<T>(first ? laws::representation(a, b) : laws::representation(b, a), "representation",
+                                pair, first ? a : b, first ? b : a, true);
+                     }});
+  for (const Entry& e : entries) {
+    const std::string law = e.law;
+    const auto property = e.property;
+    const bool dist = e.distribution;
+    ::testing::RegisterTest(law.c_str(), (pair + "_" + scalar).c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [=]() -> ::testing::Test* {
+                              struct Body : ::testing::Test {
+                                std::string law, pair, scalar;
+                                bool dist;
+                                std::function<void()> property;
+                                void TestBody() override {
+                                  g_tally = Tally{};
+                                  ::rc::detail::checkGTest(property);
+                                  if (dist) expect_distribution(law + " " + pair + " " + scalar);
+                                  finish(law, pair, scalar);
+                                }
+                              };
+                              auto* t = new Body;
+                              t->law = law;
+                              t->pair = pair;
+                              t->scalar = scalar;
+                              t->dist = dist;
+                              t->property = property;
+                              return t;
+                            });
+  }
+}
+
+template <Scalar T>
+void register_kind_laws(ShapeKind k) {
+  const std::string kind = std::string(name(k));
+  const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
+  auto reg = [&](const std::string& law, std::function<void()> property) {
+    ::testing::RegisterTest(law.c_str(), (kind + "_" + scalar).c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [=]() -> ::testing::Test* {
+                              struct Body : ::testing::Test {
+                                std::string law, kind, scalar;
+                                std::function<void()> property;
+                                void TestBody() override {
+                                  g_tally = Tally{};
+                                  ::rc::detail::checkGTest(property);
+                                  finish(law, kind, scalar);
+                                }
+                              };
+                              auto* t = new Body;
+                              t->law = law;
+                              t->kind = kind;
+                              t->scalar = scalar;
+                              t->property = property;
+                              return t;
+                            });
+  };
+  reg("bounds", [=] {
+    const auto [a, b] = gen_pair<T>(k, k);
+    judge<T>(laws::bounds_law(a), "bounds", kind, a, std::nullopt, false);
+  });
+  reg("raycast", [=] {
+    const auto [a, b] = gen_pair<T>(k, k);
+    // Aim from b's inner point toward a's (hits, grazes along touching pairs), or any direction.
+    const Vec2c from = inner_point(b), to = inner_point(a);
+    const Vec2<T> origin = from.template cast<T>();
+    const bool aimed = *rc::gen::inRange(0, 4) != 0;
+    const Vec2<T> dir = aimed ? Vec2<T>((to - from).template cast<T>())
+                              : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
+    const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
+    const laws::RayInput<T> ray{origin, dir};
+    const laws::Verdict v = laws::raycast_law(a, ray, max_t);
+    judge<T>(v, "raycast", kind, a, std::nullopt, false, [=](laws::Case& c) {
+      c.ox = origin.x();
+      c.oy = origin.y();
+      c.dx = dir.x();
+      c.dy = dir.y();
+      c.max_t = max_t;
+    });
+  });
+  reg("rejection", [=] {
+    const int n = k == ShapeKind::Polygon ? 2 * *rc::gen::inRange(0, 6) : k == ShapeKind::Compound ? 3 * *rc::gen::inRange(0, 3) : 6;
+    std::vector<T> values;
+    for (int i = 0; i < n; ++i) values.push_back(gen_raw_value<T>());
+    const laws::Verdict v = laws::rejection<T>(k, std::span<const T>(values));
+    g_tally.record(v, false);
+    RC_TAG(v.account.substr(0, v.account.find(':')));
+    if (!v.ok) {
+      g_tally.failed = true;
+      laws::Case c;
+      c.law = "rejection";
+      c.scalar = scalar;
+      c.a.kind = k;
+      c.values.assign(values.begin(), values.end());
+      c.expected = v.expected;
+      c.got = v.got;
+      c.account = v.account;
+      c.source = "property rejection " + kind + " " + scalar + " " + seed_text();
+      g_tally.counterexample = c;
+    }
+    if (!v.ok) RC_FAIL(v.account);
+  });
+}
+
+void register_all() {
+  for_each_pair([]<ShapeKind A, ShapeKind B>() {
+    register_pair_laws<float>(A, B);
+    register_pair_laws<double>(A, B);
+  });
+  for_each_kind([]<ShapeKind K>() {
+    register_kind_laws<float>(K);
+    register_kind_laws<double>(K);
+  });
+}
+
+}  // namespace
+}  // namespace collide::props
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  collide::props::register_all();
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Runs the property suite within a budget and reports law x pair x scalar.
+
+usage: properties/run.py [--build-dir D] [--cases N] [--seed S] [--pair P] [--law L] [--minutes M]
+                         [--jobs J]
+
+--cases N    RapidCheck cases per (law, pair, scalar) test (RC_PARAMS max_success; max_size stays
+             at 100). Without it, --minutes picks N from a short calibration run (default 100).
+--seed S     RapidCheck seed (default: chosen here and printed, so a run can be repeated).
+--pair P     one pair, e.g. circle_obb (either order), or a kind for the single-shape laws.
+--law L      one law family (agreement, symmetry, translation, rotation, resolution, bounds,
+             raycast, hierarchy, representation, contact, distance, rejection).
+--minutes M  time budget for the whole run (default 3).
+
+Prints a table (cases, relation distribution, disagreements, status) and writes it as JSON to
+build/reports/properties.json. A counterexample is written by the suite itself as a case file
+(+ SVG) under tests/regressions/; the paths are listed here. Exit status 1 if any test failed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import pathlib
+import random
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+KINDS = ["circle", "aabb", "obb", "capsule", "polygon", "compound"]
+LAWS = ["agreement", "symmetry", "translation", "rotation", "resolution", "bounds", "raycast", "hierarchy",
+        "representation", "contact", "distance", "rejection"]
+RELATIONS = ["separated", "touching", "overlapping", "contained"]
+
+
+def canonical_pair(p: str) -> str:
+    if p in KINDS:
+        return p
+    for i, a in enumerate(KINDS):
+        for b in KINDS[i:]:
+            if p in (f"{a}_{b}", f"{b}_{a}"):
+                return f"{a}_{b}"
+    sys.exit(f"run.py: unknown pair '{p}'")
+
+
+def gtest_filter(laws: list[str], pair: str | None) -> str:
+    name = f"{pair}_*" if pair else "*"
+    return ":".join(f"{law}.{name}" for law in laws)
+
+
+def run_suite(exe: pathlib.Path, laws: list[str], pair: str | None, cases: int, seed: int, jobs: int,
+              report: pathlib.Path) -> tuple[int, str]:
+    """Runs the laws split over `jobs` processes; returns (worst exit status, combined output)."""
+    groups = [laws[i::jobs] for i in range(jobs)] if len(laws) >= jobs else [laws]
+    env = dict(os.environ)
+    env["RC_PARAMS"] = f"max_success={cases} max_size=100 seed={seed}"
+    env["COLLIDE_PROPS_REPORT"] = str(report)
+    procs = []
+    for g in groups:
+        if not g:
+            continue
+        procs.append(subprocess.Popen([str(exe), f"--gtest_filter={gtest_filter(g, pair)}"], env=env,
+                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True))
+    status, output = 0, []
+    for p in procs:
+        out, _ = p.communicate()
+        output.append(out)
+        status = max(status, p.returncode)
+    return status, "\n".join(output)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build-dir", default="build/ci")
+    ap.add_argument("--cases", type=int)
+    ap.add_argument("--seed", type=int)
+    ap.add_argument("--pair")
+    ap.add_argument("--law", choices=LAWS)
+    ap.add_argument("--minutes", type=float, default=3.0)
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+
+    build = pathlib.Path(args.build_dir)
+    if not build.is_absolute():
+        build = ROOT / build
+    exe = build / "properties" / "collide_properties"
+    if not exe.exists():
+        print(f"run.py: building {exe.name} in {build}")
+        if subprocess.run(["cmake", "--build", str(build), "--target", "collide_properties", "-j2"]).returncode:
+            print(f"run.py: cannot build {exe}", file=sys.stderr)
+            return 2
+    seed = args.seed if args.seed is not None else random.randrange(1, 2**31)
+    laws = [args.law] if args.law else LAWS
+    pair = canonical_pair(args.pair) if args.pair else None
+
+    with tempfile.TemporaryDirectory() as tmp:
+        cases = args.cases
+        if cases is None:
+            # Calibrate: 20 cases per test, then fill ~80% of the budget (at most 2000 per test).
+            cal_report = pathlib.Path(tmp) / "calibration.jsonl"
+            t0 = time.monotonic()
+            run_suite(exe, laws, pair, 20, seed, args.jobs, cal_report)
+            per_case = max(time.monotonic() - t0, 0.05) / 20
+            cases = int(max(20, min(2000, 0.8 * args.minutes * 60 / per_case)))
+            print(f"calibration: {per_case * 1000:.1f} ms per case-round; {cases} cases per test "
+                  f"for a {args.minutes:g} minute budget")
+        report = pathlib.Path(tmp) / "report.jsonl"
+        t0 = time.monotonic()
+        status, output = run_suite(exe, laws, pair, cases, seed, args.jobs, report)
+        seconds = time.monotonic() - t0
+        records = [json.loads(line) for line in report.read_text().splitlines()] if report.exists() else []
+
+    failed_tests = sorted({line.split()[3] for line in output.splitlines()
+                           if line.startswith("[  FAILED  ]") and len(line.split()) > 3 and "." in line.split()[3]})
+    rows = []
+    for r in records:
+        name = f"{r['law']}.{r['pair']}_{r['scalar']}"
+        dist = {k: r.get(k, 0) for k in RELATIONS}
+        failed = r["failed"] or name in failed_tests
+        rows.append({"name": name, "law": r["law"], "pair": r["pair"], "scalar": r["scalar"],
+                     "cases": r["cases"], "distribution": dist, "disagreements": r["disagreements"],
+                     "status": "fail" if failed else "pass",
+                     "reason": ("law broken" if r["failed"] else "distribution below 10%") if failed else "",
+                     "case_file": r.get("case_file", "")})
+    total = sum(r["cases"] for r in rows)
+    print(f"\n{'law':15} {'pair':19} {'scalar':6} {'cases':>6}  {'sep':>4} {'tch':>4} {'ovl':>4} {'cnt':>4}  "
+          f"{'disagree':>8}  status")
+    for r in rows:
+        d = r["distribution"]
+        n = max(r["cases"], 1)
+        pct = [f"{100 * d[k] / n:3.0f}%" if r["law"] not in ("bounds", "raycast", "rejection") else "   -" for k in RELATIONS]
+        print(f"{r['law']:15} {r['pair']:19} {r['scalar']:6} {r['cases']:6}  {' '.join(pct)}  {r['disagreements']:8}"
+              f"  {r['status'].upper()} {r['reason']}")
+    cases_per_second = total / seconds if seconds > 0 else 0.0
+    disagreements = sum(r["disagreements"] for r in rows)
+    n_failed = sum(r["status"] == "fail" for r in rows) + (1 if status and not rows else 0)
+    print(f"\n{len(rows)} tests, {total} cases in {seconds:.1f} s ({cases_per_second:.0f} cases/s), seed {seed}, "
+          f"{disagreements} disagreements within the band, {n_failed} failing")
+    saved = [r["case_file"] for r in rows if r["case_file"]]
+    for path in saved:
+        print(f"counterexample kept: {path}")
+    if status and not rows:
+        print(output[-4000:])
+
+    reports = ROOT / "build" / "reports"
+    reports.mkdir(parents=True, exist_ok=True)
+    summary = {"status": "fail" if n_failed or status else "pass", "seed": seed, "cases_per_test": cases,
+               "cases": total, "seconds": round(seconds, 2), "cases_per_second": round(cases_per_second, 1),
+               "disagreements": disagreements, "failures": n_failed, "counterexamples": saved,
+               "rc_params": f"max_success={cases} max_size=100 seed={seed}", "properties": rows}
+    (reports / "properties.json").write_text(json.dumps(summary, indent=1) + "\n")
+    print(f"report: {reports / 'properties.json'}")
+    return 1 if (n_failed or status) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
