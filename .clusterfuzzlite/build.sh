@@ -1,0 +1,42 @@
+#!/bin/bash -eu
+# Builds collide's fuzz targets the OSS-Fuzz way: $CXX and $CXXFLAGS for every translation unit
+# (the library, the exact oracle, the laws and the targets, so coverage reaches all of them),
+# $LIB_FUZZING_ENGINE at link time, binaries and their seed corpora / options into $OUT.
+#
+# Inputs (set by ClusterFuzzLite / OSS-Fuzz, or by fuzz/check_build_sh.py locally):
+#   CXX CXXFLAGS LIB_FUZZING_ENGINE OUT; WORK (scratch, optional); SRC (checkout parent, optional)
+#   COLLIDE_JOBS (build parallelism, default: all cores)
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [[ ! -f "$ROOT/fuzz/CMakeLists.txt" ]]; then
+  ROOT="${SRC:?}/collide"  # OSS-Fuzz copies this script to $SRC/build.sh
+fi
+BUILD="${WORK:-/tmp}/collide-fuzz-build"
+JOBS="${COLLIDE_JOBS:-$(nproc)}"
+
+# Static GMP/MPFR (the runner image has neither); no benchmarks; the engine only at link time.
+cmake -S "$ROOT" -B "$BUILD" -G Ninja \
+  -DCMAKE_BUILD_TYPE= \
+  -DCMAKE_CXX_COMPILER="$CXX" \
+  -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
+  -DCMAKE_FIND_LIBRARY_SUFFIXES=.a \
+  -DCOLLIDE_BUILD_BENCH=OFF \
+  -DCOLLIDE_FUZZ_ENGINE="$LIB_FUZZING_ENGINE"
+
+TARGETS="$(sed -n 's/^COLLIDE_FUZZ_TARGETS:INTERNAL=//p' "$BUILD/CMakeCache.txt" | tr ';' ' ')"
+if [[ -z "$TARGETS" ]]; then
+  echo "build.sh: no fuzz targets configured (is collide::laws available?)" >&2
+  exit 1
+fi
+BUILD_TARGETS=()
+for t in $TARGETS; do BUILD_TARGETS+=("fuzz_$t"); done
+cmake --build "$BUILD" -j "$JOBS" --target "${BUILD_TARGETS[@]}"
+
+mkdir -p "$OUT"
+for t in $TARGETS; do
+  cp "$BUILD/fuzz/bin/$t" "$OUT/$t"
+  rm -f "$OUT/${t}_seed_corpus.zip"
+  (cd "$ROOT/fuzz/corpus/$t" && zip -q -r "$OUT/${t}_seed_corpus.zip" .)
+  printf '[libfuzzer]\nmax_len = 4096\n' > "$OUT/$t.options"
+done
+echo "build.sh: built $TARGETS into $OUT"

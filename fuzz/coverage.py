@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Line and branch coverage of lib/ by the fuzz corpora and the property suite
+(the backend of `./harness coverage`).
+
+  fuzz/coverage.py [--build-dir D] [--coverage-dir C] [--no-properties] [--jobs J]
+
+Builds the fuzz replay executables and the property suite with clang's source-based coverage
+(-fprofile-instr-generate -fcoverage-mapping) in C (default build/coverage; --build-dir is
+accepted for the harness and only used to place C beside it), replays every corpus
+fuzz/corpus/<target>/, runs the property suite at its ctest depth, merges the profiles with
+llvm-profdata and reports lib/ with llvm-cov: printed per file and in total, and written to
+build/reports/coverage.json.
+
+Exit status: 0 on success, 2 when the build or a tool fails.
+"""
+import argparse
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def tool(name):
+    for cand in (name, f"{name}-14"):
+        if shutil.which(cand):
+            return cand
+    sys.exit(f"coverage.py: {name} not found (Debian package llvm)")
+
+
+def cache_value(build, key):
+    cache = build / "CMakeCache.txt"
+    if not cache.exists():
+        return None
+    for line in cache.read_text(errors="replace").splitlines():
+        if line.startswith(key + ":"):
+            return line.split("=", 1)[1]
+    return None
+
+
+def run(cmd, **kw):
+    print("+ " + " ".join(str(c) for c in cmd), flush=True)
+    return subprocess.run(cmd, **kw)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    ap.add_argument("--build-dir", help="(accepted for the harness; the coverage build goes beside it)")
+    ap.add_argument("--coverage-dir", help="coverage build directory (default build/coverage)")
+    ap.add_argument("--no-properties", action="store_true", help="corpora only")
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+
+    build = pathlib.Path(args.coverage_dir) if args.coverage_dir else ROOT / "build/coverage"
+    build = build if build.is_absolute() else ROOT / build
+    flags = "-fprofile-instr-generate -fcoverage-mapping"
+    if cache_value(build, "CMAKE_CXX_FLAGS") != flags:
+        if run(["cmake", "--preset", "clang", "-B", str(build), f"-DCMAKE_CXX_FLAGS={flags}",
+                "-DCOLLIDE_BUILD_BENCH=OFF"], cwd=ROOT).returncode != 0:
+            return 2
+    targets = [t for t in (cache_value(build, "COLLIDE_FUZZ_TARGETS") or "").split(";") if t]
+    if not targets:
+        print("coverage.py: no fuzz targets configured (is collide::laws built?)")
+        return 2
+    exes = [f"fuzz_replay_{t}" for t in targets]
+    with_props = not args.no_properties and (ROOT / "properties/CMakeLists.txt").exists()
+    if with_props:
+        exes.append("collide_properties")
+    if run(["cmake", "--build", str(build), "-j", str(args.jobs), "--target"] + exes, cwd=ROOT).returncode != 0:
+        return 2
+
+    prof = build / "profiles"
+    shutil.rmtree(prof, ignore_errors=True)
+    prof.mkdir()
+    env = dict(os.environ, LLVM_PROFILE_FILE=str(prof / "%p-%m.profraw"))
+    binaries = []
+    for t in targets:
+        exe = build / "fuzz" / f"fuzz_replay_{t}"
+        binaries.append(exe)
+        r = run([str(exe), str(ROOT / "fuzz/corpus" / t)], env=env, cwd=build, stdout=subprocess.DEVNULL)
+        if r.returncode != 0:
+            print(f"coverage.py: replay of {t}'s corpus failed ({r.returncode}); its profile still counts")
+    if with_props:
+        exe = build / "properties" / "collide_properties"
+        binaries.append(exe)
+        penv = dict(env, RC_PARAMS="max_success=100 max_size=100",
+                    COLLIDE_REGRESSIONS_DIR=str(build / "property-cases"))
+        r = run([str(exe), "--gtest_brief=1"], env=penv, cwd=build, stdout=subprocess.DEVNULL)
+        if r.returncode != 0:
+            print(f"coverage.py: the property suite failed ({r.returncode}); its profile still counts")
+
+    merged = build / "merged.profdata"
+    raws = sorted(prof.glob("*.profraw"))
+    if not raws or run([tool("llvm-profdata"), "merge", "-sparse", "-o", str(merged)] + [str(p) for p in raws]).returncode:
+        return 2
+    objects = [str(binaries[0])] + [a for b in binaries[1:] for a in ("-object", str(b))]
+    lib = str(ROOT / "lib")
+    exported = subprocess.run([tool("llvm-cov"), "export", "-summary-only", f"-instr-profile={merged}"] + objects +
+                              [lib], capture_output=True, text=True)
+    if exported.returncode != 0:
+        print(exported.stderr)
+        return 2
+    data = json.loads(exported.stdout)["data"][0]
+    files = []
+    for f in data["files"]:
+        s = f["summary"]
+        files.append({"file": str(pathlib.Path(f["filename"]).relative_to(ROOT)),
+                      "lines": s["lines"]["count"], "lines_covered": s["lines"]["covered"],
+                      "branches": s["branches"]["count"], "branches_covered": s["branches"]["covered"]})
+    totals = data["totals"]
+
+    def pct(c, n):
+        return round(100.0 * c / n, 1) if n else 100.0
+
+    print(f"\n{'file':58} {'lines':>16} {'branches':>16}")
+    for f in sorted(files, key=lambda f: f["file"]):
+        print(f"{f['file']:58} {f['lines_covered']:>6}/{f['lines']:<5} {pct(f['lines_covered'], f['lines']):5.1f}% "
+              f"{f['branches_covered']:>6}/{f['branches']:<5} {pct(f['branches_covered'], f['branches']):5.1f}%")
+    lt, bt = totals["lines"], totals["branches"]
+    print(f"{'total lib/':58} {lt['covered']:>6}/{lt['count']:<5} {pct(lt['covered'], lt['count']):5.1f}% "
+          f"{bt['covered']:>6}/{bt['count']:<5} {pct(bt['covered'], bt['count']):5.1f}%")
+    report = {
+        "scope": "lib/",
+        "sources": {"corpora": targets, "property_suite": with_props},
+        "lines": {"covered": lt["covered"], "total": lt["count"], "percent": pct(lt["covered"], lt["count"])},
+        "branches": {"covered": bt["covered"], "total": bt["count"], "percent": pct(bt["covered"], bt["count"])},
+        "files": files,
+    }
+    out = ROOT / "build/reports"
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "coverage.json").write_text(json.dumps(report, indent=2) + "\n")
+    print(f"written {out / 'coverage.json'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,280 @@
+#pragma once
+/// @file decode.hpp
+/// Structure-aware decoding of fuzz input into shapes, driven by the registry: a kind byte picks
+/// the kind (visit_kind), and Decoder<K, T> reads that kind's values. A kind added to the registry
+/// without a Decoder fails to compile here.
+///
+/// Byte format of one shape (scalars are raw bit patterns, 4 bytes for float, 8 for double):
+///   kind byte (value % kKindCount indexes kKinds), then per kind:
+///   circle   cx cy r
+///   aabb     min.x min.y max.x max.y
+///   obb      form byte (% 3): 0 = make(center, half, angle): cx cy hx hy angle
+///                             1 = make_with_axis:           cx cy hx hy ux uy
+///                             2 = from_corners:             p0 p1 p2 p3 (x y each)
+///   capsule  ax ay bx by r
+///   polygon  count byte: low 4 bits = vertex count (0..15), bit 7 = make_hull instead of make;
+///            then count points
+///   compound count byte (% 5 children; 0 is rejected as EmptyCompound); each child is a kind
+///            byte (% (kKindCount - 1): every kind but compound) and that kind's values.
+
+#include "collide/collide.hpp"
+#include "collide/fuzz/reader.hpp"
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace collide::fuzz {
+
+/// Which entry point builds the shape: the factory make(...) (returns Expected) or the throwing
+/// constructor with the same arguments (its ShapeError is caught into an Expected).
+enum class Build : std::uint8_t { Factory, Constructor };
+
+namespace detail {
+template <class S, class Make, class Construct>
+Expected<S> build_with(Build how, Make&& make, Construct&& construct) {
+  if (how == Build::Factory) return make();
+  try {
+    return construct();
+  } catch (const ShapeError& e) {
+    return e;
+  }
+}
+}  // namespace detail
+
+/// Reads the values of one kind K and builds the shape. Specialised for every kind.
+template <ShapeKind K, Scalar T>
+struct Decoder;
+
+template <Scalar T>
+struct Decoder<ShapeKind::Circle, T> {
+  static Expected<Circle<T>> decode(Reader& r, Build how) {
+    const Vec2<T> c = r.point<T>();
+    const T rad = r.scalar<T>(Role::Size);
+    return detail::build_with<Circle<T>>(
+        how, [&] { return Circle<T>::make(c, rad); }, [&] { return Circle<T>(c, rad); });
+  }
+};
+
+template <Scalar T>
+struct Decoder<ShapeKind::Aabb, T> {
+  static Expected<Aabb<T>> decode(Reader& r, Build how) {
+    const Vec2<T> lo = r.point<T>();
+    const Vec2<T> hi = r.point<T>();
+    return detail::build_with<Aabb<T>>(
+        how, [&] { return Aabb<T>::make(lo, hi); }, [&] { return Aabb<T>(lo, hi); });
+  }
+};
+
+template <Scalar T>
+struct Decoder<ShapeKind::Obb, T> {
+  static Expected<Obb<T>> decode(Reader& r, Build how) {
+    const int form = r.byte() % 3;
+    if (form == 2) {
+      const Vec2<T> p0 = r.point<T>(), p1 = r.point<T>(), p2 = r.point<T>(), p3 = r.point<T>();
+      return Obb<T>::from_corners(p0, p1, p2, p3);  // no throwing form exists
+    }
+    const Vec2<T> c = r.point<T>();
+    const T hx = r.scalar<T>(Role::Size);
+    const T hy = r.scalar<T>(Role::Size);
+    const Vec2<T> half(hx, hy);
+    if (form == 0) {
+      const T angle = r.scalar<T>(Role::Other);
+      return detail::build_with<Obb<T>>(
+          how, [&] { return Obb<T>::make(c, half, angle); }, [&] { return Obb<T>(c, half, angle); });
+    }
+    const T ux = r.scalar<T>(Role::Other);
+    const T uy = r.scalar<T>(Role::Other);
+    return Obb<T>::make_with_axis(c, half, Vec2<T>(ux, uy));
+  }
+};
+
+template <Scalar T>
+struct Decoder<ShapeKind::Capsule, T> {
+  static Expected<Capsule<T>> decode(Reader& r, Build how) {
+    const Vec2<T> a = r.point<T>();
+    const Vec2<T> b = r.point<T>();
+    const T rad = r.scalar<T>(Role::Size);
+    return detail::build_with<Capsule<T>>(
+        how, [&] { return Capsule<T>::make(a, b, rad); }, [&] { return Capsule<T>(a, b, rad); });
+  }
+};
+
+template <Scalar T>
+struct Decoder<ShapeKind::Polygon, T> {
+  static constexpr std::size_t kMaxVertices = 15;
+  static Expected<ConvexPolygon<T>> decode(Reader& r, Build how) {
+    const std::uint8_t head = r.byte();
+    const std::size_t n = head & 0x0f;
+    const bool hull = (head & 0x80) != 0;
+    std::vector<Vec2<T>> pts;
+    pts.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) pts.push_back(r.point<T>());
+    const std::span<const Vec2<T>> view(pts);
+    if (hull) return ConvexPolygon<T>::make_hull(view);  // no throwing form exists
+    return detail::build_with<ConvexPolygon<T>>(
+        how, [&] { return ConvexPolygon<T>::make(view); }, [&] { return ConvexPolygon<T>(view); });
+  }
+};
+
+/// One compound child: any kind but compound.
+template <Scalar T>
+Expected<Primitive<T>> decode_primitive(Reader& r, Build how) {
+  static_assert(kKinds.back() == ShapeKind::Compound, "compound must be the last kind");
+  const ShapeKind k = kKinds[r.byte() % (kKindCount - 1)];
+  return visit_kind(k, [&]<ShapeKind K>() -> Expected<Primitive<T>> {
+    if constexpr (K == ShapeKind::Compound) {
+      return ShapeError(Error::EmptyCompound, -1, "unreachable: a compound child cannot be a compound");
+    } else {
+      auto s = Decoder<K, T>::decode(r, how);
+      if (!s) return s.error();
+      return Primitive<T>(std::move(s).value());
+    }
+  });
+}
+
+template <Scalar T>
+struct Decoder<ShapeKind::Compound, T> {
+  static constexpr std::size_t kMaxChildren = 4;
+  static Expected<Compound<T>> decode(Reader& r, Build how) {
+    const std::size_t n = r.byte() % (kMaxChildren + 1);
+    std::vector<Primitive<T>> children;
+    children.reserve(n);
+    // Read every child even after a rejection, so the bytes after the compound mean the same.
+    std::optional<ShapeError> first_error;
+    for (std::size_t i = 0; i < n; ++i) {
+      Expected<Primitive<T>> c = decode_primitive<T>(r, how);
+      if (c) {
+        children.push_back(std::move(c).value());
+      } else if (!first_error) {
+        first_error = c.error();
+      }
+    }
+    if (first_error) return *first_error;
+    return detail::build_with<Compound<T>>(
+        how, [&] { return Compound<T>::make(children); }, [&] { return Compound<T>(children); });
+  }
+};
+
+/// Reads a kind byte and that kind's values.
+template <Scalar T>
+Expected<Shape<T>> decode_shape(Reader& r, Build how = Build::Factory) {
+  const ShapeKind k = kKinds[r.byte() % kKindCount];
+  return visit_kind(k, [&]<ShapeKind K>() -> Expected<Shape<T>> {
+    auto s = Decoder<K, T>::decode(r, how);
+    if (!s) return s.error();
+    return Shape<T>(std::move(s).value());
+  });
+}
+
+/// Flags byte at the start of every pair input.
+struct PairHeader {
+  bool is_double;     ///< bit 0: scalar is double (else float)
+  std::uint8_t bits;  ///< the whole byte, for target-specific options in bits 1..7
+};
+
+/// Decodes "flags byte, shape a (group 0), shape b (group 1)" and calls
+/// f(header, a, b, reader) with Shape<float> or Shape<double> shapes when both are valid; the
+/// reader is left after b for targets that read more. Returns whether f was called.
+template <class F>
+bool with_pair(Reader& r, F&& f) {
+  const std::uint8_t flags = r.byte();
+  const PairHeader header{(flags & 1) != 0, flags};
+  auto run = [&]<Scalar T>() {
+    r.set_group(0);
+    Expected<Shape<T>> a = decode_shape<T>(r);
+    r.set_group(1);
+    Expected<Shape<T>> b = decode_shape<T>(r);
+    r.set_group(2);
+    if (!a || !b) return false;
+    f(header, a.value(), b.value(), r);
+    return true;
+  };
+  return header.is_double ? run.template operator()<double>() : run.template operator()<float>();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Readable accounts of shapes.
+
+/// A value exactly: shortest round-trip decimal and C99 hex float.
+inline std::string format_value(double v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.17g (%a)", v, v);
+  return buf;
+}
+
+inline std::string format_point(const Vec2c& p) {
+  // Built by appending: g++ 12 warns falsely (-Wrestrict) on `"(" + std::string(...)`.
+  std::string out = "(";
+  out += format_value(p.x());
+  out += ", ";
+  out += format_value(p.y());
+  out += ")";
+  return out;
+}
+
+namespace detail {
+/// Appends "label value" pieces to a description.
+inline void add(std::string& out, const char* label, const std::string& value) {
+  out += label;
+  out += value;
+}
+}  // namespace detail
+
+template <Scalar T>
+std::string describe(const Circle<T>& s) {
+  std::string out = "circle";
+  detail::add(out, " center ", format_point(widen(s.center())));
+  detail::add(out, " radius ", format_value(s.radius()));
+  return out;
+}
+template <Scalar T>
+std::string describe(const Aabb<T>& s) {
+  std::string out = "aabb";
+  detail::add(out, " min ", format_point(widen(s.min())));
+  detail::add(out, " max ", format_point(widen(s.max())));
+  return out;
+}
+template <Scalar T>
+std::string describe(const Obb<T>& s) {
+  std::string out = "obb";
+  detail::add(out, " center ", format_point(widen(s.center())));
+  detail::add(out, " half ", format_point(widen(s.half_extents())));
+  detail::add(out, " axis ", format_point(widen(s.axis())));
+  return out;
+}
+template <Scalar T>
+std::string describe(const Capsule<T>& s) {
+  std::string out = "capsule";
+  detail::add(out, " a ", format_point(widen(s.a())));
+  detail::add(out, " b ", format_point(widen(s.b())));
+  detail::add(out, " radius ", format_value(s.radius()));
+  return out;
+}
+template <Scalar T>
+std::string describe(const ConvexPolygon<T>& s) {
+  std::string out = "polygon";
+  for (const Vec2<T>& p : s.vertices()) detail::add(out, " ", format_point(widen(p)));
+  return out;
+}
+template <Scalar T>
+std::string describe(const Compound<T>& s) {
+  std::string out = "compound {";
+  for (const Primitive<T>& c : s.children()) {
+    detail::add(out, "\n    ", std::visit([](const auto& x) { return describe(x); }, c));
+  }
+  out += "\n  }";
+  return out;
+}
+template <Scalar T>
+std::string describe(const Shape<T>& s) {
+  return std::visit([](const auto& x) { return describe(x); }, s);
+}
+
+template <Scalar T>
+constexpr const char* scalar_name() {
+  return std::is_same_v<T, float> ? "float" : "double";
+}
+
+}  // namespace collide::fuzz

@@ -1,0 +1,49 @@
+#pragma once
+/// @file pair_target.hpp
+/// Plumbing shared by the targets whose input is a pair of shapes: the entry point records the
+/// input, and (libFuzzer builds only) the custom mutator works on the pair's decoded fields.
+
+#include "collide/fuzz/decode.hpp"
+#include "collide/fuzz/failure.hpp"
+#include "collide/fuzz/reader.hpp"
+
+#include <optional>
+
+#if defined(COLLIDE_FUZZ_ENGINE)
+#include "collide/fuzz/mutator.hpp"
+#endif
+
+namespace collide::fuzz {
+
+/// Wraps a generic callback f(a, b) as the callback with_pair expects.
+template <class F>
+auto pair_only(F&& f) {
+  return [&](const PairHeader&, const auto& a, const auto& b, Reader&) { f(a, b); };
+}
+
+/// std::optional holding b, for laws that take an optional second shape.
+template <Scalar T>
+std::optional<Shape<T>> some(const Shape<T>& s) {
+  return s;
+}
+
+#if defined(COLLIDE_FUZZ_ENGINE)
+/// The custom mutator for a pair target. decode_case(reader, f) must read the whole input the
+/// way the target does and call f(a, b) with the decoded pair when it is valid.
+template <class DecodeCase>
+std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t max_size, unsigned seed,
+                             DecodeCase&& decode_case) {
+  auto parse = [&](const std::uint8_t* d, std::size_t n) {
+    std::vector<Field> fields;
+    Reader r(d, n, &fields);
+    decode_case(r, [](const auto&, const auto&) {});
+    return fields;
+  };
+  auto touch = [&](const std::uint8_t* d, std::size_t n, TouchRequest req, Rng& rng) {
+    return touch_pair(d, n, req, rng, [&](Reader& r, auto&& f) { decode_case(r, f); });
+  };
+  return mutate(data, size, max_size, seed, parse, touch);
+}
+#endif
+
+}  // namespace collide::fuzz

@@ -1,0 +1,158 @@
+// Plain replay executable: the fuzz target without an engine. Runs every file given (directories
+// recursively, in sorted order) through LLVMFuzzerTestOneInput, each in a heap buffer of exactly
+// its size so that ASan catches any read past the end.
+//
+//   replay PATH...                 replay corpus files
+//   replay --cases-of DIR...       replay the regression cases of this target found under DIR:
+//                                  *.case files whose source is "fuzz <target> input <hex>" (the
+//                                  input bytes through the target, then the law on the values)
+//                                  and <target>-*.input raw inputs
+//
+// Exit status: 0 when everything passed (a failing input aborts, as under the engine); 1 when a
+// case's law fails on replay; 2 on usage or I/O errors.
+
+#include "collide/fuzz/failure.hpp"
+#include "collide/laws/case_file.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::optional<std::vector<std::uint8_t>> read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return std::nullopt;
+  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void run_bytes(const std::vector<std::uint8_t>& bytes) {
+  // Exact-size heap copy: no slack after the last byte.
+  const std::unique_ptr<std::uint8_t[]> buf(new std::uint8_t[bytes.size()]);
+  if (!bytes.empty()) std::memcpy(buf.get(), bytes.data(), bytes.size());
+  LLVMFuzzerTestOneInput(buf.get(), bytes.size());
+}
+
+std::vector<fs::path> files_under(const fs::path& root) {
+  std::vector<fs::path> out;
+  if (fs::is_directory(root)) {
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+      if (e.is_regular_file()) out.push_back(e.path());
+    }
+    std::sort(out.begin(), out.end());
+  } else {
+    out.push_back(root);
+  }
+  return out;
+}
+
+std::optional<std::vector<std::uint8_t>> from_hex(const std::string& s) {
+  if (s.size() % 2 != 0) return std::nullopt;
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i < s.size(); i += 2) {
+    auto digit = [](char c) -> int {
+      if (c >= '0' && c <= '9') return c - '0';
+      if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+      return -1;
+    };
+    const int hi = digit(s[i]), lo = digit(s[i + 1]);
+    if (hi < 0 || lo < 0) return std::nullopt;
+    out.push_back(static_cast<std::uint8_t>(hi * 16 + lo));
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool cases = false;
+  std::vector<fs::path> roots;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--cases-of") {
+      cases = true;
+    } else if (arg == "--help" || arg == "-h") {
+      std::printf("usage: %s [--cases-of] PATH...\n", argv[0]);
+      return 0;
+    } else {
+      roots.emplace_back(arg);
+    }
+  }
+  if (roots.empty()) {
+    std::fprintf(stderr, "usage: %s [--cases-of] PATH...\n", argv[0]);
+    return 2;
+  }
+  const std::string target(collide::fuzz::kTarget);
+  const std::string prefix = collide::fuzz::cat("fuzz ", target, " input ");
+  std::size_t inputs = 0, case_files = 0, raw = 0;
+  int status = 0;
+  for (const fs::path& root : roots) {
+    if (!fs::exists(root)) {
+      if (cases) continue;  // no regression folder yet: nothing of this target to replay
+      std::fprintf(stderr, "%s: no such file or directory\n", root.string().c_str());
+      return 2;
+    }
+    for (const fs::path& p : files_under(root)) {
+      if (!cases) {
+        const auto bytes = read_bytes(p);
+        if (!bytes) {
+          std::fprintf(stderr, "%s: cannot read\n", p.string().c_str());
+          return 2;
+        }
+        run_bytes(*bytes);
+        ++inputs;
+        continue;
+      }
+      const std::string file = p.filename().string();
+      if (p.extension() == ".input" && file.rfind(target + "-", 0) == 0) {
+        const auto bytes = read_bytes(p);
+        if (!bytes) return 2;
+        std::printf("replaying %s\n", p.string().c_str());
+        run_bytes(*bytes);
+        ++raw;
+      } else if (p.extension() == ".case") {
+        collide::laws::Case c;
+        try {
+          c = collide::laws::read_case(p);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "%s: %s\n", p.string().c_str(), e.what());
+          status = 1;
+          continue;
+        }
+        if (c.source.rfind(prefix, 0) != 0) continue;  // another target's or a property's case
+        const auto bytes = from_hex(c.source.substr(prefix.size()));
+        if (!bytes) {
+          std::fprintf(stderr, "%s: malformed input hex in source line\n", p.string().c_str());
+          status = 1;
+          continue;
+        }
+        std::printf("replaying %s\n", p.string().c_str());
+        run_bytes(*bytes);
+        const collide::laws::Verdict v = collide::laws::replay(c);
+        if (!v.ok) {
+          std::fprintf(stderr, "%s: law %s still broken\n  expected: %s\n  got: %s\n  %s\n", p.string().c_str(),
+                       c.law.c_str(), v.expected.c_str(), v.got.c_str(), v.account.c_str());
+          status = 1;
+        }
+        ++case_files;
+      }
+    }
+  }
+  if (cases) {
+    std::printf("%s: replayed %zu case files and %zu raw inputs\n", target.c_str(), case_files, raw);
+  } else {
+    std::printf("%s: replayed %zu inputs\n", target.c_str(), inputs);
+  }
+  return status;
+}
