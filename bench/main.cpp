@@ -1,0 +1,22 @@
+// collide_bench: cross-checks every suite against Box2D and the naive baselines, then times them.
+// Exits with status 1 before timing anything if an answer differs.
+
+#include "suites.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  const bool narrow = bench::register_narrowphase();
+  const bool broad = bench::register_broadphase();
+  if (!narrow || !broad) {
+    std::fprintf(stderr, "cross-check FAILED: collide and its peers disagree; nothing was timed\n");
+    return 1;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

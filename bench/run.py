@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Builds collide_bench (Release), runs it with repetitions, prints the collide/Box2D ratio table
+and writes build/reports/bench.json. Every ratio comes from one run of one binary.
+
+Usage: bench/run.py [--build-dir D] [--repetitions R] [--min-time S] [--filter REGEX]
+Figures are medians over the repetitions of CPU time per pair (or per box); on a shared 2-core
+machine they are noisy (+-20% or worse while others compile).
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def build(build_dir):
+    if not os.path.exists(os.path.join(build_dir, "CMakeCache.txt")):
+        # build/ci -> preset ci (Release, -Werror); anything else -> preset default (Release).
+        preset = "ci" if os.path.basename(build_dir.rstrip("/")) == "ci" else "default"
+        subprocess.run(["cmake", "--preset", preset, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
+                        "-DCOLLIDE_BUILD_BENCH=ON"], cwd=ROOT, check=True)
+    subprocess.run(["cmake", "--build", build_dir, "--target", "collide_bench", "-j2"], cwd=ROOT, check=True)
+    for cand in (os.path.join(build_dir, "bench", "collide_bench"), os.path.join(build_dir, "collide_bench")):
+        if os.path.exists(cand):
+            return cand
+    sys.exit("collide_bench not found under " + build_dir)
+
+
+def run(exe, repetitions, min_time, flt, raw_path):
+    cmd = [exe, "--benchmark_format=json", "--benchmark_out=" + raw_path, "--benchmark_out_format=json",
+           "--benchmark_min_time=%g" % min_time, "--benchmark_repetitions=%d" % repetitions]
+    if repetitions > 1:
+        cmd.append("--benchmark_report_aggregates_only=true")
+    if flt:
+        cmd.append("--benchmark_filter=" + flt)
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    sys.stderr.write(proc.stderr)
+    checks = [l for l in proc.stderr.splitlines() + proc.stdout.splitlines() if l.startswith("check ")]
+    if proc.returncode != 0:
+        sys.stdout.write(proc.stdout[:4000])
+        sys.exit("collide_bench failed (exit %d): cross-check or run error; no figures written" % proc.returncode)
+    with open(raw_path) as f:
+        return json.load(f), checks
+
+
+def medians(raw, repetitions):
+    """name -> ns per unit (per pair or per box), from the median aggregate (or the single run)."""
+    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+    out = {}
+    for b in raw["benchmarks"]:
+        if repetitions > 1 and b.get("aggregate_name") != "median":
+            continue
+        if repetitions <= 1 and b.get("run_type") == "aggregate":
+            continue
+        name = b.get("run_name", b["name"])
+        per = b.get("pairs") or b.get("boxes") or 1.0
+        out[name] = b["cpu_time"] * scale[b.get("time_unit", "ns")] / per
+    return out
+
+
+def ratio(a, b):
+    return round(a / b, 3) if a is not None and b else None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build-dir", default=os.path.join(ROOT, "build", "bench"))
+    ap.add_argument("--repetitions", type=int, default=3)
+    ap.add_argument("--min-time", type=float, default=0.05, help="seconds per repetition per benchmark")
+    ap.add_argument("--filter", default="", help="benchmark name regex (default: all)")
+    args = ap.parse_args()
+    build_dir = os.path.abspath(args.build_dir)
+    exe = build(build_dir)
+    reports = os.path.join(ROOT, "build", "reports")
+    os.makedirs(reports, exist_ok=True)
+    raw, checks = run(exe, args.repetitions, args.min_time, args.filter, os.path.join(reports, "bench_raw.json"))
+    m = medians(raw, args.repetitions)
+
+    pairs, broad = [], []
+    for name in sorted(m):
+        parts = name.split("/")
+        if parts[0] == "overlap" and parts[3] == "collide":
+            pair, placement = parts[1], parts[2]
+            get = lambda impl, kind="overlap": m.get("%s/%s/%s/%s" % (kind, pair, placement, impl))
+            row = {"pair": pair, "set": placement, "collide_ns": get("collide"),
+                   "box2d_test_overlap_ns": get("box2d_test_overlap"), "box2d_manifold_ns": get("box2d_manifold"),
+                   "naive_ns": get("naive"), "collide_contact_ns": get("collide", "contact"),
+                   "box2d_manifold_contact_ns": get("box2d_manifold", "contact")}
+            row["ratio_vs_test_overlap"] = ratio(row["collide_ns"], row["box2d_test_overlap_ns"])
+            row["ratio_vs_manifold"] = ratio(row["collide_ns"], row["box2d_manifold_ns"])
+            row["ratio_vs_naive"] = ratio(row["collide_ns"], row["naive_ns"])
+            row["contact_ratio_vs_manifold"] = ratio(row["collide_contact_ns"], row["box2d_manifold_contact_ns"])
+            pairs.append(row)
+    sizes = sorted({int(n.split("/")[3]) for n in m if n.startswith("broadphase/")})
+    for n in sizes:
+        for op in ("build", "pairs", "move10"):
+            row = {"n": n, "op": op}
+            for impl in ("tree", "sweep", "grid", "box2d_tree", "brute"):
+                row[impl + "_ns_per_box"] = m.get("broadphase/%s/%s/%d" % (op, impl, n))
+            b2 = row["box2d_tree_ns_per_box"]
+            for impl in ("tree", "sweep", "grid"):
+                row["box2d_over_" + impl] = ratio(b2, row[impl + "_ns_per_box"])
+            broad.append(row)
+
+    def fmt(x, w=8):
+        return ("%*.2f" % (w, x)) if isinstance(x, (int, float)) and x is not None else " " * (w - 1) + "-"
+
+    print("\nPer pair (ns, medians of %d repetitions; ratio = collide / peer, < 1 is faster)" % args.repetitions)
+    print("%-16s %-6s %8s %8s %8s %8s | %7s %7s %7s | %8s %8s %7s" % (
+        "pair", "set", "collide", "b2Test", "b2Manif", "naive", "/Test", "/Manif", "/naive", "contact", "b2Manif", "ratio"))
+    for r in pairs:
+        print("%-16s %-6s %s %s %s %s | %s %s %s | %s %s %s" % (
+            r["pair"], r["set"], fmt(r["collide_ns"]), fmt(r["box2d_test_overlap_ns"]), fmt(r["box2d_manifold_ns"]),
+            fmt(r["naive_ns"]), fmt(r["ratio_vs_test_overlap"], 7), fmt(r["ratio_vs_manifold"], 7),
+            fmt(r["ratio_vs_naive"], 7), fmt(r["collide_contact_ns"]), fmt(r["box2d_manifold_contact_ns"]),
+            fmt(r["contact_ratio_vs_manifold"], 7)))
+    print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster)")
+    print("%-7s %-7s %9s %9s %9s %10s %9s | %7s %7s %7s" % (
+        "N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid"))
+    for r in broad:
+        print("%-7d %-7s %s %s %s %s %s | %s %s %s" % (
+            r["n"], r["op"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
+            fmt(r["box2d_tree_ns_per_box"], 10), fmt(r["brute_ns_per_box"], 9), fmt(r["box2d_over_tree"], 7),
+            fmt(r["box2d_over_sweep"], 7), fmt(r["box2d_over_grid"], 7)))
+
+    goals = []
+    for r in pairs:
+        for peer in ("ratio_vs_test_overlap", "ratio_vs_manifold"):
+            if r[peer] is not None:
+                goals.append({"goal": "%s/%s faster than Box2D %s" % (r["pair"], r["set"], peer[9:]),
+                              "value": r[peer], "met": r[peer] < 1})
+        if r["pair"] in ("obb_obb", "polygon_polygon") and r["set"] == "near" and r["collide_ns"] is not None:
+            goals.append({"goal": "%s/near <= 25 ns" % r["pair"], "value": r["collide_ns"], "met": r["collide_ns"] <= 25})
+        if r["ratio_vs_naive"] is not None:
+            goals.append({"goal": "%s/%s within 1.5x of naive" % (r["pair"], r["set"]), "value": r["ratio_vs_naive"],
+                          "met": r["ratio_vs_naive"] <= 1.5})
+    for r in broad:
+        if r["n"] == 100000 and r["op"] == "pairs":
+            best = max(v for v in (r["box2d_over_tree"], r["box2d_over_sweep"], r["box2d_over_grid"]) if v is not None)
+            goals.append({"goal": "broadphase all-pairs at 100k >= 5x faster per box than Box2D tree queries",
+                          "value": best, "met": best >= 5})
+    print("\nGoals:")
+    for g in goals:
+        print("  [%s] %s: %s" % ("met" if g["met"] else "MISSED", g["goal"], g["value"]))
+    out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
+           "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
+           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
+           "goals": goals}
+    path = os.path.join(reports, "bench.json")
+    with open(path, "w") as f:
+        json.dump(out, f, indent=2)
+    print("\nwrote " + path)
+
+
+if __name__ == "__main__":
+    main()
