@@ -256,6 +256,54 @@ class Slots {
   std::size_t live_ = 0;
 };
 
+/// The proxy operations all three structures offer identically. Derived supplies
+/// add_box(Box, user) -> ProxyId, move_box(ProxyId, Box), unlink(slot) (drop the slot from its
+/// index before the slot is released), raycast(origin, direction, max_t, f), and a member
+/// `slots_` (a Slots table); it befriends this class and re-exports raycast with a using.
+template <class Derived, Scalar T>
+class ProxyOps {
+ public:
+  /// Adds a proxy for box, carrying user (returned by user_data()).
+  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return self().add_box(box_of(box), user); }
+  /// Adds a proxy from raw corners. Errors: BadBox.
+  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
+    return self().add_box(checked_box(min, max), user);
+  }
+  /// Replaces the proxy's box. Errors: InvalidProxy.
+  void move(ProxyId id, const Aabb<T>& box) { self().move_box(id, box_of(box)); }
+  /// Errors: InvalidProxy, BadBox (the proxy is checked first).
+  void move(ProxyId id, const Vec2<T>& min, const Vec2<T>& max) {
+    self().slots_.check(id);
+    self().move_box(id, checked_box(min, max));
+  }
+  /// Errors: InvalidProxy.
+  void remove(ProxyId id) {
+    const std::uint32_t s = self().slots_.check(id);
+    self().unlink(s);
+    self().slots_.release(s);
+  }
+  bool contains(ProxyId id) const noexcept { return self().slots_.contains(id); }
+  std::size_t size() const noexcept { return self().slots_.size(); }
+  /// Stored box. Errors: InvalidProxy.
+  Aabb<T> box(ProxyId id) const {
+    const Box<T>& b = self().slots_[self().slots_.check(id)].box;
+    return Aabb<T>::make(b.min, b.max).value();
+  }
+  /// Errors: InvalidProxy.
+  std::uint64_t user_data(ProxyId id) const { return self().slots_[self().slots_.check(id)].user; }
+  /// Calls f(ProxyId, t) for every proxy whose stored box meets the ray (t in units of
+  /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside). f may return
+  /// bool; false stops. Errors: BadRay.
+  template <class F>
+  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
+    self().raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
+  }
+
+ private:
+  Derived& self() noexcept { return static_cast<Derived&>(*this); }
+  const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
+};
+
 /// Orders a pair by slot index.
 inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
   return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};

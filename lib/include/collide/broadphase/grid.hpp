@@ -16,8 +16,9 @@ namespace collide::broadphase {
 
 /// Spatial-hash grid broadphase over closed boxes of scalar T. Boxes are not fattened.
 template <Scalar T>
-class UniformGrid {
+class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
  public:
+  using ProxyOps<UniformGrid<T>, T>::raycast;
   /// A proxy covering more cells than this is kept in the oversized list instead.
   static constexpr std::int64_t kMaxCellsPerProxy = 64;
   /// A query covering more cells than this scans every proxy instead.
@@ -32,36 +33,6 @@ class UniformGrid {
       throw BroadphaseError(BroadphaseErrc::BadCellSize, "cell size must be positive and finite");
   }
 
-  /// Adds a proxy for box, carrying user.
-  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return add_box(box_of(box), user); }
-  /// Errors: BadBox.
-  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
-    return add_box(checked_box(min, max), user);
-  }
-  /// Errors: InvalidProxy.
-  void move(ProxyId id, const Aabb<T>& box) { move_box(id, box_of(box)); }
-  /// Errors: InvalidProxy, BadBox.
-  void move(ProxyId id, const Vec2<T>& min, const Vec2<T>& max) {
-    slots_.check(id);
-    move_box(id, checked_box(min, max));
-  }
-  /// Errors: InvalidProxy.
-  void remove(ProxyId id) {
-    const std::uint32_t s = slots_.check(id);
-    unlink(s);
-    slots_.release(s);
-  }
-
-  bool contains(ProxyId id) const noexcept { return slots_.contains(id); }
-  std::size_t size() const noexcept { return slots_.size(); }
-  /// Errors: InvalidProxy.
-  Aabb<T> box(ProxyId id) const {
-    const Box<T>& b = slots_[slots_.check(id)].box;
-    return Aabb<T>::make(b.min, b.max).value();
-  }
-  /// Errors: InvalidProxy.
-  std::uint64_t user_data(ProxyId id) const { return slots_[slots_.check(id)].user; }
-
   /// Calls f(ProxyId) for every proxy whose box meets q (closed); f may return false to stop.
   template <class F>
   void query(const Aabb<T>& q, F&& f) const {
@@ -74,12 +45,6 @@ class UniformGrid {
 
   /// Calls f(ProxyId, t) for every proxy whose box meets the segment origin + t direction,
   /// t in [0, max_t] (t = entry parameter). Errors: BadRay.
-  /// The same for a collide::Ray (t in units of |direction|). Errors: BadRay.
-  template <class F>
-  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
-    raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
-  }
-
   template <class F>
   void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
@@ -119,6 +84,7 @@ class UniformGrid {
   }
 
  private:
+  friend class ProxyOps<UniformGrid<T>, T>;
   struct Extra {
     std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
     bool oversized = false;

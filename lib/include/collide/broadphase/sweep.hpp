@@ -15,40 +15,10 @@ namespace collide::broadphase {
 
 /// Sort-and-sweep broadphase over closed boxes of scalar T. Boxes are not fattened.
 template <Scalar T>
-class SweepAndPrune {
+class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
  public:
+  using ProxyOps<SweepAndPrune<T>, T>::raycast;
   SweepAndPrune() = default;
-
-  /// Adds a proxy for box, carrying user.
-  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return add_box(box_of(box), user); }
-  /// Errors: BadBox.
-  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
-    return add_box(checked_box(min, max), user);
-  }
-  /// Errors: InvalidProxy.
-  void move(ProxyId id, const Aabb<T>& box) { move_box(id, box_of(box)); }
-  /// Errors: InvalidProxy, BadBox.
-  void move(ProxyId id, const Vec2<T>& min, const Vec2<T>& max) {
-    slots_.check(id);
-    move_box(id, checked_box(min, max));
-  }
-  /// Errors: InvalidProxy.
-  void remove(ProxyId id) {
-    const std::uint32_t s = slots_.check(id);
-    entries_[slots_[s].extra.pos].slot = kDead;
-    ++dead_;
-    slots_.release(s);
-  }
-
-  bool contains(ProxyId id) const noexcept { return slots_.contains(id); }
-  std::size_t size() const noexcept { return slots_.size(); }
-  /// Errors: InvalidProxy.
-  Aabb<T> box(ProxyId id) const {
-    const Box<T>& b = slots_[slots_.check(id)].box;
-    return Aabb<T>::make(b.min, b.max).value();
-  }
-  /// Errors: InvalidProxy.
-  std::uint64_t user_data(ProxyId id) const { return slots_[slots_.check(id)].user; }
 
   /// Calls f(ProxyId) for every proxy whose box meets q (closed); f may return false to stop.
   template <class F>
@@ -62,12 +32,6 @@ class SweepAndPrune {
 
   /// Calls f(ProxyId, t) for every proxy whose box meets the segment origin + t direction,
   /// t in [0, max_t] (t = entry parameter). Errors: BadRay.
-  /// The same for a collide::Ray (t in units of |direction|). Errors: BadRay.
-  template <class F>
-  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
-    raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
-  }
-
   template <class F>
   void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
@@ -101,6 +65,11 @@ class SweepAndPrune {
   }
 
  private:
+  friend class ProxyOps<SweepAndPrune<T>, T>;
+  void unlink(std::uint32_t s) {
+    entries_[slots_[s].extra.pos].slot = kDead;
+    ++dead_;
+  }
   static constexpr std::uint32_t kDead = 0xffffffffu;
   struct Entry {
     T min_x, max_x, min_y, max_y;

@@ -15,42 +15,13 @@ namespace collide::broadphase {
 ///
 /// Pairs and queries are decided on the stored (unfattened) boxes: fattening only adds candidates.
 template <Scalar T>
-class DynamicTree {
+class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
  public:
+  using ProxyOps<DynamicTree<T>, T>::raycast;
   /// margin: how far each stored box is grown on every side (world units). A move that keeps
   /// the new box inside the fat box does not touch the tree. Errors: BadMargin.
   explicit DynamicTree(T margin = T(0.1)) : margin_(checked_margin(margin)) {}
 
-  /// Adds a proxy for box, carrying user (returned by user_data()).
-  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return add_box(box_of(box), user); }
-  /// Adds a proxy from raw corners. Errors: BadBox.
-  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
-    return add_box(checked_box(min, max), user);
-  }
-  /// Replaces the proxy's box. Errors: InvalidProxy.
-  void move(ProxyId id, const Aabb<T>& box) { move_box(id, box_of(box)); }
-  /// Errors: InvalidProxy, BadBox (the proxy is checked first).
-  void move(ProxyId id, const Vec2<T>& min, const Vec2<T>& max) {
-    slots_.check(id);
-    move_box(id, checked_box(min, max));
-  }
-  /// Errors: InvalidProxy.
-  void remove(ProxyId id) {
-    const std::uint32_t s = slots_.check(id);
-    remove_leaf(slots_[s].extra.leaf);
-    free_node(slots_[s].extra.leaf);
-    slots_.release(s);
-  }
-
-  bool contains(ProxyId id) const noexcept { return slots_.contains(id); }
-  std::size_t size() const noexcept { return slots_.size(); }
-  /// Stored box. Errors: InvalidProxy.
-  Aabb<T> box(ProxyId id) const {
-    const Box<T>& b = slots_[slots_.check(id)].box;
-    return Aabb<T>::make(b.min, b.max).value();
-  }
-  /// Errors: InvalidProxy.
-  std::uint64_t user_data(ProxyId id) const { return slots_[slots_.check(id)].user; }
   /// Fat box of a proxy (contains box(id)). Errors: InvalidProxy.
   Aabb<T> fat_box(ProxyId id) const {
     const Box<T>& b = nodes_[slots_[slots_.check(id)].extra.leaf].box;
@@ -67,12 +38,6 @@ class DynamicTree {
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the segment origin + t direction,
   /// t in [0, max_t]; t is the entry parameter (0 if origin is inside). f may return bool; false
   /// stops. Errors: BadRay.
-  /// The same for a collide::Ray (t in units of |direction|). Errors: BadRay.
-  template <class F>
-  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
-    raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
-  }
-
   template <class F>
   void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
@@ -167,6 +132,11 @@ class DynamicTree {
   }
 
  private:
+  friend class ProxyOps<DynamicTree<T>, T>;
+  void unlink(std::uint32_t s) {
+    remove_leaf(slots_[s].extra.leaf);
+    free_node(slots_[s].extra.leaf);
+  }
   struct Node {
     Box<T> box{};
     std::int32_t parent = -1;
