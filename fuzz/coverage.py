@@ -21,6 +21,8 @@ import shutil
 import subprocess
 import sys
 
+from cmake_cache import cache_value
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
@@ -31,14 +33,6 @@ def tool(name):
     sys.exit(f"coverage.py: {name} not found (Debian package llvm)")
 
 
-def cache_value(build, key):
-    cache = build / "CMakeCache.txt"
-    if not cache.exists():
-        return None
-    for line in cache.read_text(errors="replace").splitlines():
-        if line.startswith(key + ":"):
-            return line.split("=", 1)[1]
-    return None
 
 
 def run(cmd, **kw):

@@ -29,6 +29,8 @@ import sys
 import threading
 import time
 
+from cmake_cache import cache_value
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s: (\d+)")
 CASE_RE = re.compile(r"case file: (\S+)")
@@ -39,14 +41,6 @@ def log(msg):
     print(msg, flush=True)
 
 
-def cache_value(build, key):
-    cache = build / "CMakeCache.txt"
-    if not cache.exists():
-        return None
-    for line in cache.read_text(errors="replace").splitlines():
-        if line.startswith(key + ":"):
-            return line.split("=", 1)[1]
-    return None
 
 
 def choose_build_dir(arg, no_sanitizers):

@@ -51,16 +51,4 @@ void check(const Shape<T>& a, const Shape<T>& b) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  current_input() = {data, size};
-  Reader r(data, size);
-  decode_case(r, [](const auto& a, const auto& b) { check(a, b); });
-  return 0;
-}
-
-#if defined(COLLIDE_FUZZ_ENGINE)
-extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
-                                               unsigned int seed) {
-  return mutate_pair_case(data, size, max_size, seed, [](Reader& r, auto&& f) { decode_case(r, f); });
-}
-#endif
+COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)

@@ -47,3 +47,24 @@ std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t m
 #endif
 
 }  // namespace collide::fuzz
+
+/// Defines the entry points of a pair target: LLVMFuzzerTestOneInput records the input, decodes it
+/// with decode_case(reader, f) and calls check(a, b); libFuzzer builds also get the pair mutator.
+#if defined(COLLIDE_FUZZ_ENGINE)
+#define COLLIDE_PAIR_MUTATOR(decode_case)                                                              \
+  extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,               \
+                                                 std::size_t max_size, unsigned int seed) {          \
+    return ::collide::fuzz::mutate_pair_case(data, size, max_size, seed,                              \
+                                             [](::collide::fuzz::Reader& r, auto&& f) { decode_case(r, f); }); \
+  }
+#else
+#define COLLIDE_PAIR_MUTATOR(decode_case)
+#endif
+#define COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)                                                   \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                 \
+    ::collide::fuzz::current_input() = {data, size};                                                  \
+    ::collide::fuzz::Reader r(data, size);                                                            \
+    decode_case(r, [](const auto& a, const auto& b) { check(a, b); });                                \
+    return 0;                                                                                         \
+  }                                                                                                   \
+  COLLIDE_PAIR_MUTATOR(decode_case)
