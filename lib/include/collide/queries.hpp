@@ -185,7 +185,12 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
   if (!cores_intersect(p, q)) {
     const Closest cl = closest_points(p, q);
     const Calc d = std::sqrt(cl.dist2);
-    if (d > 0) {
+    // A gap at the level of rounding (a point that misses a segment through it only because the
+    // segment's ends were rounded) has no reliable direction: take the separating axes instead.
+    Calc scale = 0;
+    for (const Vec2c& x : p.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
+    for (const Vec2c& x : q.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
+    if (d > kOverlapErrorFactor * 0x1p-53 * scale) {
       out.normal = (cl.on_q - cl.on_p) / d;
       out.depth = std::max(Calc(0), r - d);
       const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;

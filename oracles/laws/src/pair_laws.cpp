@@ -236,10 +236,10 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     // Minimality: |v| <= depth + margin + slack, i.e. depth >= |v| - margin - slack. The slack is
-    // the computed depth's own error (4 tolerances, as the contact law allows) plus v's rounding
-    // to T and |v|'s rounding.
+    // the computed depth's own error (4 tolerances, as the contact law allows) and the rounding of
+    // |v| here; v itself is rounded toward zero in T, so its rounding needs no allowance.
     const double margin = resolve_margin(a, b, len);
-    const double slack = 4 * overlap_tolerance(a, b) + 2 * detail::eps<T>() * len + 4 * 0x1p-53 * len;
+    const double slack = 4 * overlap_tolerance(a, b) + 4 * 0x1p-53 * len;
     const double lower = len - margin - slack;
     if (lower > 0 && oracle::compare_depth(a, b, lower) < 0) {
       fail(v, "|v| <= exact depth + resolve_margin (" + num(margin) + ") + slack (" + num(slack) + ")",
