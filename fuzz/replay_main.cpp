@@ -3,6 +3,9 @@
 // its size so that ASan catches any read past the end.
 //
 //   replay PATH...                 replay corpus files
+//   replay --repeat N PATH...      replay the corpus files N times over (read once, before the
+//                                  clock starts) and print the target's own rate, inputs/s:
+//                                  the cost of one execution without the engine's bookkeeping
 //   replay --cases-of DIR...       replay the regression cases of this target found under DIR:
 //                                  *.case files whose source is "fuzz <target> input <hex>" (the
 //                                  input bytes through the target, then the law on the values)
@@ -15,6 +18,8 @@
 #include "collide/laws/case_file.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -75,24 +80,59 @@ std::optional<std::vector<std::uint8_t>> from_hex(const std::string& s) {
 
 }  // namespace
 
+/// Replays every file under roots `repeat` times; prints inputs/s. Returns the exit status.
+int replay_repeatedly(const std::vector<fs::path>& roots, unsigned long repeat) {
+  std::vector<std::vector<std::uint8_t>> inputs;
+  for (const fs::path& root : roots) {
+    for (const fs::path& p : files_under(root)) {
+      auto bytes = read_bytes(p);
+      if (!bytes) {
+        std::fprintf(stderr, "%s: cannot read\n", p.string().c_str());
+        return 2;
+      }
+      inputs.push_back(std::move(*bytes));
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  for (unsigned long r = 0; r < repeat; ++r) {
+    for (const auto& bytes : inputs) run_bytes(bytes);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double runs = static_cast<double>(inputs.size()) * static_cast<double>(repeat);
+  std::printf("%s: %zu inputs x %lu in %.3f s: %.0f inputs/s\n", std::string(collide::fuzz::kTarget).c_str(), inputs.size(), repeat,
+              seconds, seconds > 0 ? runs / seconds : 0.0);
+  return 0;
+}
+
+constexpr const char* kUsage = "usage: %s [--cases-of | --repeat N] PATH...\n";
+
 int main(int argc, char** argv) {
   bool cases = false;
+  unsigned long repeat = 0;
   std::vector<fs::path> roots;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--cases-of") {
       cases = true;
+    } else if (arg == "--repeat") {
+      const char* v = i + 1 < argc ? argv[++i] : "";
+      const char* end = v + std::char_traits<char>::length(v);
+      if (std::from_chars(v, end, repeat).ptr != end || repeat == 0) {
+        std::fprintf(stderr, "--repeat needs a positive whole number, got '%s'\n", v);
+        return 2;
+      }
     } else if (arg == "--help" || arg == "-h") {
-      std::printf("usage: %s [--cases-of] PATH...\n", argv[0]);
+      std::printf(kUsage, argv[0]);
       return 0;
     } else {
       roots.emplace_back(arg);
     }
   }
-  if (roots.empty()) {
-    std::fprintf(stderr, "usage: %s [--cases-of] PATH...\n", argv[0]);
+  if (roots.empty() || (cases && repeat > 0)) {
+    std::fprintf(stderr, kUsage, argv[0]);
     return 2;
   }
+  if (repeat > 0) return replay_repeatedly(roots, repeat);
   const std::string target(collide::fuzz::kTarget);
   const std::string prefix = collide::fuzz::cat("fuzz ", target, " input ");
   std::size_t inputs = 0, case_files = 0, raw = 0;

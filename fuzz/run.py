@@ -32,7 +32,7 @@ import time
 from cmake_cache import cache_value
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s: (\d+)")
+STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s:? (\d+)")
 CASE_RE = re.compile(r"case file: (\S+)")
 RAW_RE = re.compile(r"regression input: (\S+)")
 

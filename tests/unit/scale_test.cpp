@@ -163,5 +163,23 @@ TYPED_TEST(Scale, ThinBoxCollapsedByRoundingIsASegment) {
   EXPECT_NEAR(double(hit->t), 4.0, 1e-4);
 }
 
+TYPED_TEST(Scale, NeedleBoxAtTheOriginCollapsedByRoundingIsASegment) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // Half extents 2^100 x 2^-60 along the diagonal, centred at the origin: each corner's 2^-60 part
+  // is lost next to 2^100 u, so the four computed corners coincide in pairs. The thin-box check
+  // compared the short side with |centre| (0 here) instead of |centre| + the long side, kept the
+  // 4-gon with its duplicate corners, and none of its edges separated a segment lying on the same
+  // diagonal beyond the needle's end: 2^102 away, it was reported overlapping (found by the fuzz
+  // target overlap_oracle, case agreement-aabb_obb-double-a5c12c69).
+  const Obb<T> needle = Obb<T>::make_with_axis(V(0, 0), V(T(0x1p100), T(0x1p-60)), V(1, 1)).value();
+  const Aabb<T> far(V(-T(0x1p102), -T(0x1p102)), V(-T(0x1p102), 0));  // lower end on the diagonal
+  EXPECT_FALSE(overlaps(needle, far));
+  EXPECT_FALSE(overlaps(far, needle));
+  EXPECT_GT(double(distance(needle, far)), 0x1p100);
+  const Aabb<T> on_needle(V(-T(0x1p99), -T(0x1p99)), V(-T(0x1p99), 0));  // lower end on the needle
+  EXPECT_TRUE(overlaps(needle, on_needle));
+}
+
 }  // namespace
 }  // namespace collide::test

@@ -117,10 +117,14 @@ Core core_of(const Obb<T>& s) {
     return k;
   }
   const std::array<Vec2c, 4> q = {Vec2c(c - ex - ey), Vec2c(c + ex - ey), Vec2c(c + ex + ey), Vec2c(c - ex + ey)};
-  // Corners are off by a few units of roundoff of |c| + h; sides longer than 2^-40 |c| (and not
-  // subnormal-sized) keep every turn strictly left, so only thinner boxes pay for the check.
+  // Corners are off by a few units of roundoff of |c| + the larger half extent; sides longer than
+  // 2^-40 of that (and not subnormal-sized) keep every turn strictly left, so only thinner boxes
+  // pay for the check. (Measured against |c| alone, a 1e38 x 1e-245 box at the origin kept its
+  // four corners although they had rounded to two points, and the duplicate corners hid every
+  // separating edge.)
   const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
-  if (!(hmin > 0x1p-40 * c.cwiseAbs().maxCoeff() && hmin > 0x1p-1000)) {
+  const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) {
     for (std::size_t i = 0; i < 4; ++i) {
       if (orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) return hull_core(q);
     }
