@@ -11,9 +11,11 @@
   libFuzzer's fork mode with J workers, so a failure is recorded and the run goes on. Prints a
   progress line each minute: elapsed, executions, exec/s, corpus size, coverage, failures.
 - At the end merges the new inputs that add coverage into fuzz/corpus/<target>/ (-merge=1),
-  minimises every failure, and turns it into a regression case under tests/regressions/: a .case
-  file + .svg (the property suite's format) when a law broke, else the raw input
-  (<target>-<hash>.input) with the crash report beside it (.txt).
+  groups the failing inputs by what failed (law, scalar and wording of the account, or the
+  sanitizer's summary), minimises the smallest input of each group, and turns it into a
+  regression case under tests/regressions/: a .case file + .svg (the property suite's format)
+  when a law broke, else the raw input (<target>-<hash>.input) with the crash report beside it
+  (.txt).
 - Writes build/reports/fuzz.md and build/reports/fuzz.json.
 
 Exit status: 0 when no target failed, 1 when failures were found, 2 on a build or usage error.
@@ -164,6 +166,34 @@ def merge(binary, target, work):
     return len(after - before), len(after)
 
 
+def signature(binary, artifact, work):
+    """What a failure is, for grouping: the law, the scalar and the words of its account, or the
+    sanitizer's summary line. One night can write thousands of artifacts of one bug; each bug is
+    minimised and promoted once."""
+    r = subprocess.run([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(artifact)], cwd=work,
+                       capture_output=True, text=True, errors="replace")
+    lines = r.stderr.splitlines()
+    head = next((ln for ln in lines if ln.startswith("== collide fuzz target")), None)
+    if head:
+        # The law, the scalar and the wording of what was expected and got, numbers left out.
+        said = [re.sub(r"\(0x[^)]*\)|[-+]?\d[\d.]*(e[-+]?\d+)?", "#", ln.strip()) for ln in lines
+                if ln.strip().startswith(("expected:", "got:"))]
+        return " | ".join([head.strip()] + [" ".join(x.split()[:8]) for x in said])
+    summary = next((ln for ln in lines if "SUMMARY:" in ln), None)
+    if summary:
+        return re.sub(r"0x[0-9a-f]+", "", summary.strip())
+    return f"{pathlib.Path(artifact).name.split('-')[0]} (exit {r.returncode})"
+
+
+def distinct_failures(binary, artifacts, work):
+    """[(smallest artifact, how many artifacts share its signature, signature)]."""
+    groups = {}
+    for art in artifacts:
+        groups.setdefault(signature(binary, art, work), []).append(art)
+    return [(min(arts, key=lambda a: pathlib.Path(a).stat().st_size), len(arts), sig)
+            for sig, arts in groups.items()]
+
+
 def to_regression(binary, target, artifact, work):
     """Minimises a failure and stores it as a regression case; returns a description."""
     art = pathlib.Path(artifact)
@@ -172,6 +202,10 @@ def to_regression(binary, target, artifact, work):
     if kind == "crash":
         subprocess.run([str(binary), "-minimize_crash=1", "-runs=3000", "-max_total_time=120",
                         f"-exact_artifact_path={minimized}", str(art)], cwd=work, capture_output=True)
+    # libFuzzer's minimiser keeps any failing input, and a shorter input often fails another law:
+    # keep the minimised input only when it still fails the same way.
+    if minimized.exists() and signature(binary, minimized, work) != signature(binary, art, work):
+        minimized.unlink()
     if not minimized.exists():
         shutil.copy(art, minimized)
     regressions = ROOT / "tests/regressions"
@@ -225,7 +259,8 @@ def write_reports(results, args, build):
             for f in r["failures"]:
                 link = f.get("case_file", "")
                 svg = f" ([picture]({f['svg']}))" if f.get("svg") else ""
-                lines.append(f"- {f['kind']}: [{link}]({link}){svg} — {f.get('summary', '')}")
+                lines.append(f"- {f['kind']} ({f['inputs']} failing inputs alike): [{link}]({link}){svg} — "
+                             f"{f.get('summary', '')}")
     (reports / "fuzz.md").write_text("\n".join(lines) + "\n")
     return reports
 
@@ -258,11 +293,18 @@ def main():
         res = run_target(binary, t, per_target, args.jobs, work)
         if not args.no_merge:
             res["new_inputs"], res["corpus_after"] = merge(binary, t, work)
-        res["failures"] = [to_regression(binary, t, a, work) for a in res.pop("artifacts")]
+        artifacts = res.pop("artifacts")
+        res["failure_inputs"] = len(artifacts)
+        res["failures"] = []
+        for art, count, sig in distinct_failures(binary, artifacts, work):
+            entry = to_regression(binary, t, art, work)
+            entry.update({"inputs": count, "signature": sig})
+            res["failures"].append(entry)
         log(f"  {t}: {res['executions']} executions, {res['exec_per_s']} exec/s, cov {res['coverage_edges']}, "
-            f"{res.get('new_inputs', 0)} new inputs, {len(res['failures'])} failures")
+            f"{res.get('new_inputs', 0)} new inputs, {len(res['failures'])} distinct failures "
+            f"({res['failure_inputs']} failing inputs)")
         for f in res["failures"]:
-            log(f"    {f['kind']}: {f.get('case_file')}  {f.get('summary', '')[:200]}")
+            log(f"    {f['kind']} x{f['inputs']}: {f.get('case_file')}  {f.get('summary', '')[:200]}")
         results.append(res)
     reports = write_reports(results, args, build)
     log(f"reports: {reports / 'fuzz.md'}, {reports / 'fuzz.json'}")

@@ -17,7 +17,8 @@ Each class is measured two ways:
 Goals (issue "Fuzzing"): overlap_oracle >= 500k exec/s on circle/AABB inputs, >= 100k on polygon
 pairs, one process, no sanitizers. Writes build/reports/fuzz-speed.json and fuzz-speed.md.
 
-Exit status: 0 when measured (goals met or not: this is a benchmark), 2 on a build error.
+Exit status: 0 when measured (goals met or not: this is a benchmark), 1 when the engine run
+found a failure (its input is kept in build/fuzz-speed/), 2 on a build error.
 """
 import argparse
 import struct
@@ -102,7 +103,11 @@ def engine_rate(binary, corpus, seconds, work):
     wall = time.time() - start
     m = re.search(r"stat::number_of_executed_units: (\d+)", r.stderr)
     if r.returncode != 0 or not m:
+        # A failure found while measuring is a finding: keep the input and say how to promote it.
         print(r.stderr[-3000:])
+        for art in sorted(work.glob("crash-*")) + sorted(work.glob("timeout-*")):
+            print(f"failure input kept: {art}\n  promote it: COLLIDE_FUZZ_CASE_DIR=tests/regressions "
+                  f"build/ci/fuzz/fuzz_replay_overlap_oracle {art}")
         return None
     runs = int(m.group(1))
     return {"executions": runs, "seconds": round(wall, 1), "exec_per_s": round(runs / wall)}
@@ -145,9 +150,11 @@ def main():
         for i, data in enumerate(inputs(cls, random.Random(f"{cls}-1"))):
             (corpus / f"{i:04d}.bin").write_bytes(data)
         target = target_rate(build / "fuzz/fuzz_replay_overlap_oracle", corpus, args.repeat)
+        if target is None:
+            return 1
         engine = engine_rate(nosan / "fuzz/bin/overlap_oracle", corpus, args.seconds, work)
-        if target is None or engine is None:
-            return 2
+        if engine is None:
+            return 1
         res = {"class": cls, "goal_exec_per_s": GOALS[cls], "target_inputs_per_s": target, "engine": engine}
         results.append(res)
         print(f"overlap_oracle {cls}: target alone {target:,} inputs/s; libFuzzer {engine['exec_per_s']:,} exec/s "

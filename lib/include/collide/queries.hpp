@@ -184,14 +184,14 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
   const Calc r = p.radius + q.radius;
   if (!cores_intersect(p, q)) {
     const Closest cl = closest_points(p, q);
-    const Calc d = std::sqrt(cl.dist2);
+    const Calc d = norm_of(cl.on_q - cl.on_p);
     // A gap at the level of rounding (a point that misses a segment through it only because the
     // segment's ends were rounded) has no reliable direction: take the separating axes instead.
     Calc scale = 0;
     for (const Vec2c& x : p.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
     for (const Vec2c& x : q.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
     if (d > kOverlapErrorFactor * 0x1p-53 * scale) {
-      out.normal = (cl.on_q - cl.on_p) / d;
+      out.normal = unit_of(cl.on_q - cl.on_p);
       out.depth = std::max(Calc(0), r - d);
       const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
       out.points[0] = (sp + sq) * 0.5;
@@ -218,6 +218,8 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
     r1 = ref[ax.face];
     r2 = ref[(ax.face + 1) % ref.size()];
   }
+  const Vec2c tangent = r2 - r1;
+  const Calc len2 = tangent.squaredNorm();
   std::array<Vec2c, 2> ip{};
   int icount = 0;
   if (inc.size() == 1) {
@@ -237,13 +239,30 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
         best = j;
       }
     }
+    // Among faces as anti-parallel as the best up to rounding (a polygon side split by a vertex
+    // one ulp off the line), take the one that spans most of the reference face: the other may
+    // lie beside it entirely, and clipping would then find nothing.
+    Calc best_span = -std::numeric_limits<Calc>::infinity();
+    for (std::size_t j = 0; j < inc.size(); ++j) {
+      const Vec2c a0 = inc[j], a1 = inc[(j + 1) % inc.size()];
+      const Vec2c e = a1 - a0;
+      if (Vec2c(e.y(), -e.x()).dot(nr) / std::max(e.norm(), Calc(1e-300)) > best_dot + 0x1p-40) continue;
+      const Calc t0 = (a0 - r1).dot(tangent), t1 = (a1 - r1).dot(tangent);
+      const Calc span = std::min(std::max(t0, t1), len2) - std::max(std::min(t0, t1), Calc(0));
+      if (span > best_span) {
+        best_span = span;
+        best = j;
+      }
+    }
     ip = {inc[best], inc[(best + 1) % inc.size()]};
     icount = 2;
   }
-  const Vec2c tangent = r2 - r1;
-  const Calc len2 = tangent.squaredNorm();
-  bool missed = false;
-  if (icount == 2 && len2 > 0) {
+  const Calc inc_len2 = icount == 2 ? (ip[1] - ip[0]).squaredNorm() : 0;
+  // Clipping an incident face 2^20 times longer than the reference face moves its ends by ulps of
+  // the long face, more than the short face is long: skip it and take the witness below.
+  const bool ref_tiny = inc_len2 > 0x1p40 * len2;
+  bool missed = ref_tiny;
+  if (icount == 2 && len2 > 0 && !missed) {
     // Clip the incident segment to 0 <= (x - r1) . tangent <= len2.
     for (int side = 0; side < 2 && !missed; ++side) {
       const Calc lim = side == 0 ? 0 : len2;
@@ -262,15 +281,36 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
   }
   if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
   if (out.count == 0) {
-    // The incident face misses a short reference face, or rounding left nothing in reach. The
-    // incident core's deepest vertex is then the witness: it and its image moved by depth along
-    // the normal lie on the two shapes, so report their midpoint.
+    // Clipping found nothing (the incident face misses a short reference face) or was not
+    // trusted (a 1e24 incident edge against a 1e-37 box side). The witness is the candidate
+    // nearest to both dilated cores: the incident core's deepest vertex moved halfway to the
+    // reference surface, the reference face's midpoint moved halfway to the incident surface,
+    // or a vertex of either core (often inside the other, when the shapes differ in size by
+    // orders of magnitude).
+    auto excess = [](const Vec2c& x, const Core& c) {
+      Core pt;
+      pt.push(x);
+      if (cores_intersect(pt, c)) return Calc(0);
+      const Closest cl = closest_points(pt, c);
+      return std::max(Calc(0), norm_of(cl.on_q - cl.on_p) - c.radius);
+    };
+    Calc best = std::numeric_limits<Calc>::infinity();
+    auto consider_witness = [&](const Vec2c& x) {
+      const Calc e = std::max(excess(x, p), excess(x, q));
+      if (e < best) {
+        best = e;
+        out.points[0] = x;
+      }
+    };
     std::size_t k = 0;
     for (std::size_t j = 1; j < inc.size(); ++j) {
       if ((inc[j] - r1).dot(nr) < (inc[k] - r1).dot(nr)) k = j;
     }
     const Calc s = (inc[k] - r1).dot(nr);
-    out.points[0] = inc[k] + nr * ((ref.radius - s - inc.radius) * 0.5);
+    consider_witness(inc[k] + nr * ((ref.radius - s - inc.radius) * 0.5));
+    consider_witness((r1 + r2) * 0.5 + nr * (ref.radius - out.depth * 0.5));
+    for (const Vec2c& x : p.pts()) consider_witness(x);
+    for (const Vec2c& x : q.pts()) consider_witness(x);
     out.count = 1;
   }
   return out;
@@ -425,18 +465,21 @@ Vec2<T> round_toward_zero(const Vec2c& v) noexcept {
 }
 
 /// Push along -n that separates every pair of children that would meet while a slides along -n:
-///   t(n) = max over child pairs whose shadows across n overlap of  h_a(n) + h_b(-n)
+///   t(n) = max over child pairs whose shadows across n overlap (within tol) of  h_a(n) + h_b(-n)
 /// (the support gap; for one convex pair along its least-penetration axis it equals the depth).
+/// tol covers the rounding of the supports, of n and of a + v to T: shadows that miss by less
+/// may still meet. (Without it, a needle lying on a capsule child's own line, 1e-9 from a circle
+/// child, was pushed out of the circle and onto the capsule.)
 template <ConcreteShape A, ConcreteShape B>
-Calc push_along(const A& a, const B& b, const Vec2c& n) {
+Calc push_along(const A& a, const B& b, const Vec2c& n, Calc tol) {
   const Vec2c side = perp(n);
   Calc t = 0;
   for_each_primitive(a, [&](const auto& ca) {
     const Core pa = core_of(ca);
     for_each_primitive(b, [&](const auto& cb) {
       const Core pb = core_of(cb);
-      const bool shadows_meet = dilated_support(pa, side) >= -dilated_support(pb, -side) &&
-                                dilated_support(pb, side) >= -dilated_support(pa, -side);
+      const bool shadows_meet = dilated_support(pa, side) + tol >= -dilated_support(pb, -side) &&
+                                dilated_support(pb, side) + tol >= -dilated_support(pa, -side);
       if (shadows_meet) t = std::max(t, dilated_support(pa, n) + dilated_support(pb, -n));
     });
   });
@@ -447,7 +490,8 @@ Calc push_along(const A& a, const B& b, const Vec2c& n) {
 
 /// The margin resolve() adds beyond the computed depth: 4 * 64 * 2^-53 * S (four times the
 /// relative part of overlap_tolerance), plus 8 eps_T (S + depth), which covers rounding a's moved
-/// coordinates to T, plus 16 subnormal units of double and one of T for rounding near zero.
+/// coordinates to T, plus 16 subnormal units of double and two of T for rounding near zero (a
+/// push along a diagonal moves each coordinate by a whole unit: sqrt(2) units in all).
 /// It has no 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
 /// relative-accurate, and a push of 2^-500 would collapse a subnormal polygon.
 template <AnyShape A, AnyShape B>
@@ -455,7 +499,7 @@ Calc resolve_margin(const A& a, const B& b, Calc depth) {
   using T = scalar_of_t<A>;
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
   return 4 * kOverlapErrorFactor * 0x1p-53 * s + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s + depth) +
-         16 * 0x1p-1074 + Calc(std::numeric_limits<T>::denorm_min());
+         16 * 0x1p-1074 + 2 * Calc(std::numeric_limits<T>::denorm_min());
 }
 
 /// Minimum translation of a that separates it from b (the lecture's shortest-push rule,
@@ -466,6 +510,11 @@ Calc resolve_margin(const A& a, const B& b, Calc depth) {
 /// Minimal for the 15 pairs of primitives (depth is the least penetration over the Minkowski
 /// difference's faces). For compounds the push is the smallest among the child contacts'
 /// directions, each long enough to clear every child it would meet on the way.
+///
+/// Caveat: a + v may have no representation in T: beyond max_magnitude(), or a polygon (or
+/// compound child) thin next to |v| whose vertices round onto one line. translated(a, v) then
+/// returns that named error (OutOfRange, Collinear, TooFewVertices); v still separates the exact,
+/// unrounded a + v.
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
@@ -473,6 +522,9 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) -> Vec2<T> {
       if (!detail::overlaps_concrete(ca, cb)) return Vec2<T>::Zero();
+      // A push is at most about the shapes' extent, 2 S.
+      const Calc scale = std::max(detail::scale_of(bounds(ca)), detail::scale_of(bounds(cb)));
+      const Calc shadow_tol = resolve_margin(ca, cb, 2 * scale);
       Vec2c best_n(1, 0);
       Calc best_t = std::numeric_limits<Calc>::infinity();
       detail::for_each_primitive(ca, [&](const auto& pa) {
@@ -481,7 +533,7 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
           const detail::ContactC c = detail::contact_cores(detail::core_of(pa), detail::core_of(pb));
           const Calc t = detail::is_compound_v<std::remove_cvref_t<decltype(ca)>> ||
                                  detail::is_compound_v<std::remove_cvref_t<decltype(cb)>>
-                             ? detail::push_along(ca, cb, c.normal)
+                             ? detail::push_along(ca, cb, c.normal, shadow_tol)
                              : c.depth;
           if (t < best_t) {
             best_t = t;

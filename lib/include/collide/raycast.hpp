@@ -13,7 +13,8 @@
 ///   = (64 * 2^-53 + 4 eps_T) * M + 2^-500 + denorm_min_T, M = max(S, |origin|_inf),
 ///   S = largest absolute coordinate of bounds(shape)):
 /// - a returned point lies within delta of the shape (within delta of its boundary unless t = 0),
-///   and |origin + t * direction - point| <= delta;
+///   and |origin + t * direction - point| <= delta + (4 eps_T t + denorm_min_T) |direction| (t is
+///   rounded to T, and underflows to 0 for a hit 1e-60 along a 1e33 direction);
 /// - no ray point with parameter in [0, t) is deeper than delta inside the shape;
 /// - no hit means no ray point with parameter in [0, max_t] is deeper than delta inside the shape.
 /// So rays passing within delta of the shape (grazing, or ending within delta of it) may hit or
@@ -92,8 +93,7 @@ inline std::optional<HitC> ray_disk(const Vec2c& c, Calc r, const RayC& ray) noe
   const Calc b = m.dot(ray.u);
   const Calc r2 = r * r;
   if (m.squaredNorm() <= r2) {
-    const Calc len = m.norm();
-    return HitC{0, len > 0 ? Vec2c(m / len) : Vec2c(-ray.u)};
+    return HitC{0, m != Vec2c::Zero() ? unit_of(m) : Vec2c(-ray.u)};
   }
   if (b > 0) return std::nullopt;  // outside and moving away
   const Vec2c h = m - ray.u * b;
@@ -101,8 +101,7 @@ inline std::optional<HitC> ray_disk(const Vec2c& c, Calc r, const RayC& ray) noe
   if (h2 > r2) return std::nullopt;
   const Calc s = std::max(Calc(0), -b - std::sqrt(r2 - h2));
   const Vec2c n = ray.o + ray.u * s - c;
-  const Calc len = n.norm();
-  return HitC{s, len > 0 ? Vec2c(n / len) : Vec2c(-ray.u)};
+  return HitC{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
 }
 
 /// Cyrus-Beck clipping against half-planes n_i . x <= n_i . p_i (outward normals, any length).
@@ -132,8 +131,7 @@ std::optional<HitC> ray_half_planes(std::size_t count, Plane&& plane, const RayC
     }
   }
   if (!(enter <= exit) || exit < 0 || enter > ray.s_max) return std::nullopt;
-  const Calc len = enter_n.norm();
-  return HitC{std::max(Calc(0), enter), len > 0 ? Vec2c(enter_n / len) : Vec2c(-ray.u)};
+  return HitC{std::max(Calc(0), enter), enter_n != Vec2c::Zero() ? unit_of(enter_n) : Vec2c(-ray.u)};
 }
 
 /// Ray against a closed segment [a, b] (zero thickness).
@@ -151,8 +149,7 @@ inline std::optional<HitC> ray_segment(const Vec2c& a, const Vec2c& b, const Ray
   if (s < 0 || v < 0 || v > 1) return std::nullopt;
   Vec2c n = perp(w);
   if (n.dot(ray.u) > 0) n = -n;
-  const Calc len = n.norm();
-  return HitC{s, len > 0 ? Vec2c(n / len) : Vec2c(-ray.u)};
+  return HitC{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
 }
 
 /// Ray against a dilated core (point + r, segment + r, or convex polygon + 0).
@@ -166,9 +163,8 @@ inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
     const std::optional<HitC> hb = ray_disk(c[1], c.radius, ray);
     if (closer(hb, best)) best = hb;
     const Vec2c w = c[1] - c[0];
-    const Calc len = w.norm();
-    if (len > 0) {
-      const Vec2c t = w / len, n = perp(t);
+    if (w != Vec2c::Zero()) {
+      const Vec2c t = unit_of(w), n = perp(t);
       const Vec2c ap = c[0] + n * c.radius, am = c[0] - n * c.radius;
       const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
         switch (i) {

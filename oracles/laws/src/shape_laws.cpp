@@ -110,6 +110,19 @@ bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
   return false;
 }
 
+/// o lies in s farther than `bound` from its boundary (for a compound: from some child's
+/// boundary, inside that child), exactly: the origins for which the ray must hit at t = 0.
+template <Scalar T>
+bool deep_inside(const Shape<T>& s, const Vec2c& o, double bound) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    for (const Primitive<T>& child : c->children()) {
+      if (oracle::contains(child, o) && oracle::compare_boundary_distance(child, o, bound) > 0) return true;
+    }
+    return false;
+  }
+  return oracle::contains(s, o) && oracle::compare_boundary_distance(s, o, bound) > 0;
+}
+
 }  // namespace
 
 template <Scalar T>
@@ -136,7 +149,7 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       // Nothing within the segment shortened by the bound at its end.
       const double shorten = len > 0 ? bound / len : 0;
       const double t_end = double(max_t) - shorten;
-      if (inside && !(!detail::is_compound(s) && oracle::compare_boundary_distance(s, o, bound) <= 0)) {
+      if (inside && deep_inside(s, o, bound)) {
         fail("a hit at t = 0 (origin inside the shape, deeper than the bound)", "no hit");
       } else if (t_end > 0 && passes_deep(s, o, Vec2c(o + d * t_end), bound)) {
         fail("no point deeper than the bound on the segment to max_t", "no hit");
@@ -151,11 +164,13 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       return v;
     }
     if (inside) {
-      if (t != 0 && !(!detail::is_compound(s) && oracle::compare_boundary_distance(s, o, bound) <= 0))
+      if (t != 0 && deep_inside(s, o, bound))
         fail("t = 0 for an origin inside the shape (deeper than the bound)", "t " + num(t));
       return v;
     }
-    if ((p - (o + d * t)).norm() > bound + 4 * detail::eps<T>() * t * len) {
+    // t is returned in T: its rounding, relative or (when t underflows T) absolute, moves o + t d.
+    if ((p - (o + d * t)).norm() >
+        bound + (4 * detail::eps<T>() * t + double(std::numeric_limits<T>::denorm_min())) * len) {
       fail("point = origin + t * direction", "point " + vec(hit->point));
       return v;
     }

@@ -296,6 +296,28 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 // ---------------------------------------------------------------------------------------------
 // Penetration by separating axes, for cores that intersect.
 
+/// |v| without underflow or overflow of |v|^2: a vector with a component outside [2^-500, 2^500]
+/// is first scaled by a power of two (exact when scaling up), so a direction between points
+/// 1e-159 apart keeps its 53 bits instead of the few left in a subnormal square.
+inline Calc norm_of(const Vec2c& v) noexcept {
+  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+  if (!(m > 0) || (m >= 0x1p-500 && m <= 0x1p500)) return v.norm();
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));
+  return std::ldexp(Vec2c(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e)).norm(), e);
+}
+
+/// v / |v| (see norm_of); the zero vector for a zero v.
+inline Vec2c unit_of(const Vec2c& v) noexcept {
+  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+  if (!(m > 0)) return Vec2c::Zero();
+  if (m >= 0x1p-500 && m <= 0x1p500) return v / v.norm();
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));
+  const Vec2c s(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
+  return s / s.norm();
+}
+
 /// max over the core of x . n
 inline Calc support(const Core& c, const Vec2c& n) noexcept {
   Calc m = -std::numeric_limits<Calc>::infinity();
@@ -310,18 +332,16 @@ void for_each_face(const Core& c, F&& f) {
   if (n == 1) return;
   if (n == 2) {
     const Vec2c d = c[1] - c[0];
-    const Calc len = d.norm();
-    if (!(len > 0)) return;
-    const Vec2c nrm = Vec2c(d.y(), -d.x()) / len;
+    if (d == Vec2c::Zero()) return;
+    const Vec2c nrm = unit_of(Vec2c(d.y(), -d.x()));
     f(nrm, 0u);
     f(Vec2c(-nrm), 1u);
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2c d = c[(i + 1) % n] - c[i];
-    const Calc len = d.norm();
-    if (!(len > 0)) continue;
-    f(Vec2c(Vec2c(d.y(), -d.x()) / len), static_cast<unsigned>(i));
+    if (d == Vec2c::Zero()) continue;
+    f(unit_of(Vec2c(d.y(), -d.x())), static_cast<unsigned>(i));
   }
 }
 
