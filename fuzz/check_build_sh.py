@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Runs .clusterfuzzlite/build.sh with local values, as ctest test fuzz.clusterfuzzlite_build.
 
-Sets CXX=clang++, CXXFLAGS with ASan and -fsanitize=fuzzer-no-link (no -stdlib=libc++: Debian
-does not install libc++), LIB_FUZZING_ENGINE=-fsanitize=fuzzer and a scratch $OUT / $WORK, then
+Sets CXX=clang++, CXXFLAGS with ASan and -fsanitize=fuzzer-no-link (no -stdlib=libc++: Debian's
+libFuzzer runtime is built against libstdc++ and does not link with it),
+LIB_FUZZING_ENGINE=-fsanitize=fuzzer and a scratch $OUT / $WORK, then
 checks what OSS-Fuzz expects in $OUT: every target built, each with <target>_seed_corpus.zip and
 <target>.options, and each binary replays its unzipped seed corpus and fuzzes briefly (which runs
 the custom mutator) without a failure.
