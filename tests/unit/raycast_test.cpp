@@ -98,6 +98,22 @@ TYPED_TEST(Raycast, BoxesAndPolygons) {
   expect_hit(diamond, ray<T>(-5, -5, 1, 1), T(10), 5 - r, -r, -r, -r, -r);
 }
 
+// A needle from (0, 0) to (1, 1) whose other corner is 2^-60 along the x axis: the side from
+// (2^-60, 0) to (1, 1) has direction (1 - 2^-60, 1), which rounds to (1, 1), so the two long sides
+// become exactly parallel half-planes and their intersection a strip running on past (1, 1).
+// Clipping against the half-planes alone reported a hit at (2, 2), outside the needle (found by
+// the contact_raycast fuzz target with a 1.6e11-long needle in a compound).
+TYPED_TEST(Raycast, NeedlePolygonIsNotHitPastItsSharpCorner) {
+  using T = TypeParam;
+  const ConvexPolygon<T> needle{Vec2<T>(0, 0), Vec2<T>(T(0x1p-60), 0), Vec2<T>(1, 1)};
+  EXPECT_FALSE(raycast(needle, ray<T>(1, 0, 1, 2), T(10)).has_value());
+  EXPECT_FALSE(raycast(needle, ray<T>(3, 0, -1, 2), T(10)).has_value());
+  // Across the needle it is still hit, from both sides.
+  const double r = std::sqrt(0.5);
+  expect_hit(needle, ray<T>(T(0.5), 2, 0, -1), T(10), 1.5, 0.5, 0.5, -r, r);
+  expect_hit(needle, ray<T>(T(0.5), -2, 0, 1), T(10), 2.5, 0.5, 0.5, r, -r);
+}
+
 TYPED_TEST(Raycast, Capsule) {
   using T = TypeParam;
   const Capsule<T> cap(Vec2<T>(0, 0), Vec2<T>(4, 0), 1);

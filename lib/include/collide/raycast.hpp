@@ -68,8 +68,14 @@ inline bool closer(const std::optional<HitC>& h, const std::optional<HitC>& best
   return h && (!best || h->s < best->s);
 }
 
-/// Entry distance of the ray into the padded box, or nothing if it misses within s_max.
-inline std::optional<Calc> ray_box_entry(const Vec2c& lo, const Vec2c& hi, const RayC& r) noexcept {
+/// Where the ray is inside a box: distances along it.
+struct Span {
+  Calc enter;
+  Calc exit;
+};
+
+/// The part of the ray (within s_max) inside the padded box, or nothing if it misses.
+inline std::optional<Span> ray_box_span(const Vec2c& lo, const Vec2c& hi, const RayC& r) noexcept {
   Calc enter = 0, exit = r.s_max;
   for (int i = 0; i < 2; ++i) {
     const Calc l = lo[i] - r.pad, h = hi[i] + r.pad;
@@ -83,7 +89,7 @@ inline std::optional<Calc> ray_box_entry(const Vec2c& lo, const Vec2c& hi, const
     exit = std::min(exit, t2);
   }
   if (!(enter <= exit)) return std::nullopt;
-  return enter;
+  return Span{enter, exit};
 }
 
 /// Ray against a disk (centre c, radius r >= 0). Robust form: the perpendicular offset is computed
@@ -190,16 +196,18 @@ inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
 
 /// One primitive: early-out on its bounding box, then start the exact-shape cast from the box
 /// entry so that every later product is at the shape's scale (a far origin cannot overflow).
+/// The cast also ends at the box exit: the rounded half-planes of a polygon with a very sharp
+/// corner (two sides at an angle below their rounding) bound a region reaching far past that
+/// corner, and the box is what cuts it off.
 template <PrimitiveShape P>
 std::optional<HitC> ray_primitive(const P& shape, const RayC& ray) {
   const Aabb<scalar_of_t<P>> box = bounds(shape);
-  const std::optional<Calc> entry = ray_box_entry(widen(box.min()), widen(box.max()), ray);
-  if (!entry) return std::nullopt;
+  const std::optional<Span> span = ray_box_span(widen(box.min()), widen(box.max()), ray);
+  if (!span) return std::nullopt;
+  const Calc entry = span->enter;  // >= 0
   RayC local = ray;
-  if (*entry > 0) {
-    local.o = ray.o + ray.u * *entry;
-    local.s_max = ray.s_max - *entry;
-  }
+  local.o = ray.o + ray.u * entry;
+  local.s_max = span->exit - entry;
   const Core core = core_of(shape);
   Core origin;
   origin.push(local.o);
@@ -214,7 +222,8 @@ std::optional<HitC> ray_primitive(const P& shape, const RayC& ray) {
   } else {
     h = ray_core(core, local);
   }
-  if (h) h->s += *entry;
+  if (!h || !(h->s <= local.s_max)) return std::nullopt;
+  h->s += entry;
   return h;
 }
 
@@ -222,7 +231,7 @@ template <ConcreteShape S>
 std::optional<HitC> ray_concrete(const S& shape, const RayC& ray) {
   if constexpr (is_compound_v<S>) {
     const Aabb<scalar_of_t<S>>& box = shape.bounds();
-    if (!ray_box_entry(widen(box.min()), widen(box.max()), ray)) return std::nullopt;
+    if (!ray_box_span(widen(box.min()), widen(box.max()), ray)) return std::nullopt;
     std::optional<HitC> best;
     for (const auto& child : shape.children()) {
       const std::optional<HitC> h = std::visit([&](const auto& x) { return ray_primitive(x, ray); }, child);
