@@ -10,6 +10,7 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::farther_than;
 using detail::num;
 using detail::vec;
 using detail::yes;
@@ -457,8 +458,7 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
     for (int i = 0; i < c->count; ++i) {
       const Vec2c p = c->points[std::size_t(i)].template cast<double>();
       for (const Shape<T>* s : {&a, &b}) {
-        if (oracle::contains(*s, p)) continue;
-        if (oracle::compare_distance(*s, Shape<double>(Circle<double>(p, 0.0)), reach) > 0) {
+        if (farther_than(*s, p, reach)) {
           fail(v, "contact point within " + num(reach) + " of both shapes",
                "point " + vec(c->points[std::size_t(i)]) + " is farther from " + describe(*s), pair_text(a, b));
           return;

@@ -15,6 +15,7 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::farther_than;
 using detail::num;
 using detail::vec;
 
@@ -174,7 +175,7 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       fail("point = origin + t * direction", "point " + vec(hit->point));
       return v;
     }
-    if (oracle::compare_distance(s, Shape<double>(Circle<double>(p, 0.0)), bound) > 0) {
+    if (farther_than(s, p, bound)) {
       fail("hit point within " + num(bound) + " of the shape", "point " + vec(hit->point));
       return v;
     }

@@ -100,6 +100,14 @@ bool is_compound(const Shape<T>& s) {
   return std::holds_alternative<Compound<T>>(s);
 }
 
+/// p is farther than d from the closed shape s, exactly. Asked through the point's distance to
+/// the boundary rather than to a zero-radius circle at p: a point of a shape near the range's
+/// edge (a ray hit, a contact point) may lie beyond max_magnitude, where no Circle can be built.
+template <Scalar T>
+bool farther_than(const Shape<T>& s, const Vec2<double>& p, double d) {
+  return !oracle::contains(s, p) && oracle::compare_boundary_distance(s, p, d) > 0;
+}
+
 /// Exact sum test: a + t rounds to exactly r with no rounding error (computed in double, where
 /// float sums are exact unless the exponents are far apart; the two-sum error catches that).
 inline bool exact_sum(double a, double t, double r) {
