@@ -178,8 +178,22 @@ void run_ops(BP& bp, Reader& r) {
       std::sort(got.begin(), got.end());
       std::sort(want.begin(), want.end());
       if (got != want) {
+        // The first proxy the two lists disagree on, with its box and both answers.
+        std::string first;
+        for (const Entry<T>& e : model) {
+          const auto find = [&](const std::vector<std::pair<ProxyId, Calc>>& v) {
+            const auto it = std::find_if(v.begin(), v.end(), [&](const auto& h) { return h.first == e.id; });
+            return it == v.end() ? std::string("no hit") : cat("t ", format_value(it->second));
+          };
+          const std::string g = find(got), w = find(want);
+          if (g == w) continue;
+          first = cat("; first difference: ", id_text(e.id), " box ", format_point(widen(e.box.min)), " - ",
+                      format_point(widen(e.box.max)), ": raycast ", g, ", brute force ", w);
+          break;
+        }
         fail_raw("raycast(): ", std::to_string(got.size()), " hits, brute force finds ", std::to_string(want.size()),
-                 " (or different t)");
+                 "; ray ", format_point(widen(origin)), " + t ", format_point(widen(dir)), ", max_t ",
+                 format_value(max_t), first);
       }
     } else {
       check_pairs<T>(bp, model, op == 5 ? PairOrder::Sorted : PairOrder::Any);

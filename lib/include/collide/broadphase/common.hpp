@@ -131,6 +131,17 @@ inline RaySegment<T> make_ray(const Vec2<T>& origin, const Vec2<T>& direction, T
   return {widen(origin), widen(direction), Calc(max_t)};
 }
 
+/// (x - o) / d with the sign of the exact quotient: a quotient that underflows to zero becomes the
+/// smallest subnormal of its sign. Without this a box 1e-288 beside a ray whose direction is
+/// 1e231 long gave a slab crossed at t = -1e-519, rounded to -0, and the box was "hit" at t = 0.
+/// (x - o is exact in sign, so only the division can lose it.) Monotone in x, as rounding is.
+inline Calc slab_parameter(Calc x, Calc o, Calc d) noexcept {
+  const Calc num = x - o, q = num / d;
+  if (q != 0 || num == 0) return q;
+  const Calc tiny = std::numeric_limits<Calc>::denorm_min();
+  return (num > 0) == (d > 0) ? tiny : -tiny;
+}
+
 /// Slab test in double: the entry parameter of the segment into the closed box, or a negative
 /// value when it misses. Monotone in the box (every operation rounds monotonically), so a box
 /// that contains another is hit whenever the inner one is: fat boxes can prune safely.
@@ -143,7 +154,7 @@ inline Calc ray_hits_box(const RaySegment<T>& r, const Box<T>& b) noexcept {
       if (o < lo || o > hi) return -1;
       continue;
     }
-    Calc a = (lo - o) / d, c = (hi - o) / d;
+    Calc a = slab_parameter(lo, o, d), c = slab_parameter(hi, o, d);
     if (a > c) std::swap(a, c);
     t0 = std::max(t0, a);
     t1 = std::min(t1, c);
