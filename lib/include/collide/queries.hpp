@@ -144,12 +144,20 @@ bool overlaps(const A& a, const B& b) {
   });
 }
 
-/// The error bound delta of overlaps() for this pair: 64 * 2^-53 * S + 2^-500, where S is the
-/// largest absolute coordinate of either bounding box.
+/// The error unit of this pair's rounded outputs (contact depth, normal and points, distance,
+/// resolution margin): 64 * 2^-53 * S + 2^-500, where S is the largest absolute coordinate of
+/// either bounding box. Each query states its bound as a multiple of it.
 template <AnyShape A, AnyShape B>
-Calc overlap_tolerance(const A& a, const B& b) {
+Calc rounding_tolerance(const A& a, const B& b) {
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
   return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor;
+}
+
+/// The error bound delta of overlaps() for this pair: the band of exact signed distance around
+/// touching inside which overlaps() may differ from the exact answer.
+template <AnyShape A, AnyShape B>
+Calc overlap_tolerance(const A& a, const B& b) {
+  return rounding_tolerance(a, b);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -362,7 +370,7 @@ std::optional<ContactC> contact_concrete(const A& a, const B& b) {
 
 /// Contact of two shapes: present exactly when overlaps(a, b). For a compound, the deepest contact
 /// among its overlapping child pairs. Coincident circle centres give normal (1, 0).
-/// Error: normal and depth are rounded results (depth within a few overlap_tolerance of exact).
+/// Error: normal and depth are rounded results (depth within a few rounding_tolerance of exact).
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
@@ -489,7 +497,7 @@ Calc push_along(const A& a, const B& b, const Vec2c& n, Calc tol) {
 }  // namespace detail
 
 /// The margin resolve() adds beyond the computed depth: 4 * 64 * 2^-53 * S (four times the
-/// relative part of overlap_tolerance), plus 8 eps_T (S + depth), which covers rounding a's moved
+/// relative part of rounding_tolerance), plus 8 eps_T (S + depth), which covers rounding a's moved
 /// coordinates to T, plus 16 subnormal units of double and two of T for rounding near zero (a
 /// push along a diagonal moves each coordinate by a whole unit: sqrt(2) units in all).
 /// It has no 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
@@ -558,7 +566,7 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
 // Distance.
 
 /// Euclidean distance between the closed shapes: 0 when they overlap, otherwise the gap.
-/// Error: a rounded result, within a few overlap_tolerance(a, b) of the exact gap.
+/// Error: a rounded result, within a few rounding_tolerance(a, b) of the exact gap.
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 scalar_of_t<A> distance(const A& a, const B& b) {

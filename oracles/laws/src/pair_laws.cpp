@@ -97,7 +97,7 @@ Verdict symmetry(const Shape<T>& a, const Shape<T>& b) {
            pair_text(a, b));
       return;
     }
-    const double tol = overlap_tolerance(a, b);
+    const double tol = rounding_tolerance(a, b);
     const auto cab = contact(a, b), cba = contact(b, a);
     if (bool(cab) != ab || bool(cba) != ba) {
       fail(v, "contact exists exactly when overlaps (" + yes(ab) + ")",
@@ -253,7 +253,7 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     // the computed depth's own error (4 tolerances, as the contact law allows) and the rounding of
     // |v| here; v itself is rounded toward zero in T, so its rounding needs no allowance.
     const double margin = resolve_margin(a, b, len);
-    const double slack = 4 * overlap_tolerance(a, b) + 4 * 0x1p-53 * len;
+    const double slack = 4 * rounding_tolerance(a, b) + 4 * 0x1p-53 * len;
     const double lower = len - margin - slack;
     if (lower > 0 && oracle::compare_depth(a, b, lower) < 0) {
       fail(v, "|v| <= exact depth + resolve_margin (" + num(margin) + ") + slack (" + num(slack) + ")",
@@ -425,7 +425,7 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
       v.account = "no overlap, no contact";
       return;
     }
-    const double tol = overlap_tolerance(a, b);
+    const double tol = rounding_tolerance(a, b);
     const double depth = c->depth;
     const Vec2c n = c->normal.template cast<double>();
     v.account = "contact normal " + vec(c->normal) + " depth " + num(depth) + " points " + std::to_string(c->count);
@@ -484,7 +484,7 @@ Verdict distance_law(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     // Plus the rounding of the result to T (absolute near T's subnormals).
-    const double bound = 4 * overlap_tolerance(a, b) + 4 * detail::eps<T>() * d +
+    const double bound = 4 * rounding_tolerance(a, b) + 4 * detail::eps<T>() * d +
                          2 * double(std::numeric_limits<T>::denorm_min());
     const bool too_far = oracle::compare_distance(a, b, d - bound) < 0;    // gap < d - bound
     const bool too_near = oracle::compare_distance(a, b, d + bound) > 0;   // gap > d + bound

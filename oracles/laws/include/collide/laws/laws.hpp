@@ -6,8 +6,9 @@
 /// found by one is judged the same way by the others.
 ///
 /// Every law takes shapes as Shape<T>, T = float or double (explicitly instantiated in
-/// collide_laws). "Tolerance" below is overlap_tolerance(a, b) from queries.hpp: the band of exact
-/// signed distance inside which overlaps() may disagree with the oracle.
+/// collide_laws). "Tolerance" below is overlap_tolerance(a, b) from queries.hpp (the band of exact
+/// signed distance inside which overlaps() may disagree with the oracle) for decisions, and
+/// rounding_tolerance(a, b) (the error unit of rounded outputs) for depths, points and distances.
 
 #include "collide/collide.hpp"
 
