@@ -179,6 +179,34 @@ TYPED_TEST(Validation, TranslatedReportsOutOfRange) {
   expect_error(r, Error::OutOfRange, 0);
 }
 
+TYPED_TEST(Validation, ExpectedGivesItsValueLikeAPointerOrAFallback) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const auto good = Circle<T>::make(V(1, 2), T(3));
+  ASSERT_TRUE(good);
+  EXPECT_EQ((*good).radius(), T(3));
+  EXPECT_EQ(good->center(), V(1, 2));
+  const Circle<T> fallback(V(0, 0), T(7));
+  EXPECT_EQ(good.value_or(fallback).radius(), T(3));
+  const auto bad = Circle<T>::make(V(1, 2), T(-3));
+  ASSERT_FALSE(bad);
+  EXPECT_EQ(bad.value_or(fallback).radius(), T(7));
+  EXPECT_EQ(Circle<T>::make(V(1, 2), T(-3)).value_or(fallback).radius(), T(7));
+  EXPECT_THROW((void)*bad, std::bad_variant_access);
+}
+
+TEST(ShapeErrorMessage, NamesTheErrorAndIndexAndIsCutToItsBuffer) {
+  const ShapeError e(Error::NonConvex, 12, "polygon turns the wrong way");
+  EXPECT_STREQ(e.what(), "NonConvex: polygon turns the wrong way (index 12)");
+  const ShapeError none(Error::EmptyCompound, -1, "compound has no children");
+  EXPECT_STREQ(none.what(), "EmptyCompound: compound has no children");
+  const std::string long_text(500, 'x');
+  const ShapeError cut(Error::Collinear, 3, long_text);
+  const std::string_view m = cut.what();
+  EXPECT_LT(m.size(), long_text.size());
+  EXPECT_EQ(m.substr(0, 11), "Collinear: ");
+}
+
 TEST(ErrorNames, AreStable) {
   EXPECT_EQ(name(Error::NonFinite), "NonFinite");
   EXPECT_EQ(name(Error::OutOfRange), "OutOfRange");

@@ -2,9 +2,12 @@
 /// @file error.hpp
 /// Named errors for rejected shapes, and Expected<V>, the non-throwing result of every factory.
 
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstddef>
 #include <cstdint>
-#include <stdexcept>
-#include <string>
+#include <exception>
 #include <string_view>
 #include <utility>
 #include <variant>
@@ -46,17 +49,40 @@ constexpr std::string_view name(Error e) noexcept {
 
 /// Thrown by the throwing constructors; carried by a failed Expected.
 /// index() is the offending input index (vertex, axis, value or child), or -1 when none applies.
-class ShapeError : public std::invalid_argument {
+/// The message is kept in a fixed buffer, so building, copying and returning a ShapeError never
+/// allocates (factories run every frame); a message longer than the buffer is cut.
+class ShapeError : public std::exception {
  public:
-  ShapeError(Error code, long index, std::string_view what)
-      : std::invalid_argument(std::string(name(code)) + ": " + std::string(what) +
-                              (index >= 0 ? " (index " + std::to_string(index) + ")" : "")),
-        code_(code),
-        index_(index) {}
+  /// `what` is a short account of the problem; the message reads "<name>: <what> (index <i>)".
+  ShapeError(Error code, long index, std::string_view what) noexcept : code_(code), index_(index) {
+    std::size_t n = 0;
+    const auto put = [&](std::string_view part) {
+      const std::size_t k = std::min(part.size(), kMessageCapacity - 1 - n);
+      part.copy(message_.data() + n, k);
+      n += k;
+    };
+    put(name(code));
+    put(": ");
+    put(what);
+    if (index >= 0) {
+      std::array<char, 24> digits{};
+      const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), index).ptr;
+      put(" (index ");
+      put(std::string_view(digits.data(), std::size_t(end - digits.data())));
+      put(")");
+    }
+    message_[n] = '\0';
+  }
+  /// The named error.
   Error code() const noexcept { return code_; }
+  /// The offending input index, or -1.
   long index() const noexcept { return index_; }
+  /// "<name>: <what> (index <i>)", e.g. "NonConvex: polygon turns the wrong way (index 3)".
+  const char* what() const noexcept override { return message_.data(); }
 
  private:
+  static constexpr std::size_t kMessageCapacity = 96;
+  std::array<char, kMessageCapacity> message_{};
   Error code_;
   long index_;
 };
@@ -67,17 +93,31 @@ class Expected {
  public:
   Expected(V v) : data_(std::move(v)) {}                    // NOLINT(google-explicit-constructor)
   Expected(ShapeError e) : data_(std::move(e)) {}           // NOLINT(google-explicit-constructor)
+  /// True when a value is held.
   bool has_value() const noexcept { return data_.index() == 0; }
+  /// Same as has_value().
   explicit operator bool() const noexcept { return has_value(); }
+  /// The value; throws the held ShapeError when there is none.
   const V& value() const& {
     if (!has_value()) throw std::get<1>(data_);
     return std::get<0>(data_);
   }
+  /// The value, moved out; throws the held ShapeError when there is none.
   V&& value() && {
     if (!has_value()) throw std::get<1>(data_);
     return std::get<0>(std::move(data_));
   }
-  /// Precondition: !has_value().
+  /// The value. Precondition: has_value() (checked by std::get: throws std::bad_variant_access).
+  const V& operator*() const& { return std::get<0>(data_); }
+  /// The value, moved out. Precondition: has_value().
+  V&& operator*() && { return std::get<0>(std::move(data_)); }
+  /// Member access to the value. Precondition: has_value().
+  const V* operator->() const { return &std::get<0>(data_); }
+  /// The value, or `fallback` when there is none.
+  V value_or(V fallback) const& { return has_value() ? std::get<0>(data_) : std::move(fallback); }
+  /// The value moved out, or `fallback` when there is none.
+  V value_or(V fallback) && { return has_value() ? std::get<0>(std::move(data_)) : std::move(fallback); }
+  /// The error. Precondition: !has_value().
   const ShapeError& error() const { return std::get<1>(data_); }
 
  private:

@@ -406,15 +406,14 @@ Expected<Capsule<T>> translated(const Capsule<T>& s, const Vec2<T>& v) {
 /// of the moved vertices (it can only lose vertices that became reflex or collinear).
 template <Scalar T>
 Expected<ConvexPolygon<T>> translated(const ConvexPolygon<T>& s, const Vec2<T>& v) {
-  std::vector<Vec2<T>> moved;
-  moved.reserve(s.size());
+  detail::SmallList<Vec2<T>, ConvexPolygon<T>::kInline> moved;
   for (const Vec2<T>& p : s.vertices()) moved.push_back(p + v);
-  Expected<ConvexPolygon<T>> r = ConvexPolygon<T>::make(moved);
+  Expected<ConvexPolygon<T>> r = ConvexPolygon<T>::make(moved.span());
   if (r || (r.error().code() != Error::NonConvex && r.error().code() != Error::Collinear &&
             r.error().code() != Error::TooFewVertices)) {
     return r;
   }
-  return ConvexPolygon<T>::make_hull(moved);
+  return ConvexPolygon<T>::make_hull(moved.span());
 }
 template <Scalar T>
 Expected<Compound<T>> translated(const Compound<T>& s, const Vec2<T>& v) {
@@ -494,6 +493,29 @@ Calc push_along(const A& a, const B& b, const Vec2c& n, Calc tol) {
   return t;
 }
 
+/// Whether a, moved by v and rounded to T as translated() would, still overlaps b; nullopt when
+/// the move has no representation in T (translated() would return an error). A compound is
+/// judged child by child, so that no moved copy of it is built (which would allocate).
+template <ConcreteShape A, ConcreteShape B>
+std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, const B& b) {
+  if constexpr (is_compound_v<A>) {
+    bool representable = true;
+    for (const auto& child : a.children()) {
+      std::visit([&](const auto& c) { representable = representable && bool(translated(c, v)); }, child);
+    }
+    if (!representable) return std::nullopt;
+    bool any = false;
+    for (const auto& child : a.children()) {
+      std::visit([&](const auto& c) { any = any || overlaps_concrete(translated(c, v).value(), b); }, child);
+    }
+    return any;
+  } else {
+    const auto moved = translated(a, v);
+    if (!moved) return std::nullopt;
+    return overlaps_concrete(moved.value(), b);
+  }
+}
+
 }  // namespace detail
 
 /// The margin resolve() adds beyond the computed depth: 4 * 64 * 2^-53 * S (four times the
@@ -552,8 +574,8 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
       Calc margin = resolve_margin(ca, cb, best_t);
       Vec2<T> v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
       for (int attempt = 0; attempt < 8; ++attempt) {
-        const auto moved = translated(ca, v);
-        if (!moved || !detail::overlaps_concrete(moved.value(), cb)) break;
+        const std::optional<bool> still = detail::moved_overlaps(ca, v, cb);
+        if (!still || !*still) break;
         margin *= 2;
         v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
       }

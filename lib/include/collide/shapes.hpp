@@ -50,6 +50,47 @@ struct AabbAccess;
 
 inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
 
+/// A list that keeps up to N elements inline and moves to the heap only beyond that, so that
+/// factories of shapes with a few vertices do not allocate.
+template <class V, std::size_t N>
+class SmallList {
+ public:
+  std::size_t size() const noexcept { return size_; }
+  bool empty() const noexcept { return size_ == 0; }
+  V* data() noexcept { return size_ > N || !heap_.empty() ? heap_.data() : inline_.data(); }
+  const V* data() const noexcept { return size_ > N || !heap_.empty() ? heap_.data() : inline_.data(); }
+  V& operator[](std::size_t i) noexcept { return data()[i]; }
+  const V& operator[](std::size_t i) const noexcept { return data()[i]; }
+  V& front() noexcept { return data()[0]; }
+  V& back() noexcept { return data()[size_ - 1]; }
+  V* begin() noexcept { return data(); }
+  V* end() noexcept { return data() + size_; }
+  const V* begin() const noexcept { return data(); }
+  const V* end() const noexcept { return data() + size_; }
+  void push_back(const V& v) {
+    if (heap_.empty() && size_ == N) heap_.assign(inline_.begin(), inline_.end());
+    if (!heap_.empty()) {
+      if (heap_.size() == size_) heap_.push_back(v);
+      else heap_[size_] = v;
+    } else {
+      inline_[size_] = v;
+    }
+    ++size_;
+  }
+  void pop_back() noexcept { --size_; }
+  void erase_at(std::size_t i) noexcept {
+    std::move(begin() + i + 1, end(), begin() + i);
+    --size_;
+  }
+  void resize_down(std::size_t n) noexcept { size_ = std::min(size_, n); }
+  std::span<const V> span() const noexcept { return {data(), size_}; }
+
+ private:
+  std::array<V, N> inline_{};
+  std::vector<V> heap_;
+  std::size_t size_ = 0;
+};
+
 }  // namespace detail
 
 /// Circle: every point within `radius` of `center`. radius >= 0 (0 is a point).
@@ -255,8 +296,7 @@ class ConvexPolygon {
       if (!detail::check_value(vertices[i].y(), long(2 * i + 1), &e)) return e;
     }
     // Merge repeats, remembering each kept vertex's input index for error messages.
-    std::vector<std::size_t> idx;
-    idx.reserve(vertices.size());
+    detail::SmallList<std::size_t, 2 * kInline> idx;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
       if (idx.empty() || vertices[idx.back()] != vertices[i]) idx.push_back(i);
     }
@@ -298,7 +338,7 @@ class ConvexPolygon {
           auto opposite = [](Calc s1, Calc s2) { return (s1 < 0 && s2 > 0) || (s1 > 0 && s2 < 0); };
           if (opposite(q.x() - p.x(), r.x() - q.x()) || opposite(q.y() - p.y(), r.y() - q.y()))
             return ShapeError(Error::NonConvex, long(idx[k]), "polygon doubles back");
-          idx.erase(idx.begin() + long(k));
+          idx.erase_at(k);
           changed = true;
           break;
         }
@@ -331,13 +371,15 @@ class ConvexPolygon {
       if (!detail::check_value(points[i].x(), long(2 * i), &e)) return e;
       if (!detail::check_value(points[i].y(), long(2 * i + 1), &e)) return e;
     }
-    std::vector<Vec2<T>> p(points.begin(), points.end());
+    detail::SmallList<Vec2<T>, 2 * kInline> p;
+    for (const Vec2<T>& q : points) p.push_back(q);
     std::sort(p.begin(), p.end(), [](const Vec2<T>& a, const Vec2<T>& b) {
       return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
     });
-    p.erase(std::unique(p.begin(), p.end()), p.end());
+    p.resize_down(std::size_t(std::unique(p.begin(), p.end()) - p.begin()));
     if (p.size() < 3) return ShapeError(Error::TooFewVertices, -1, "fewer than 3 distinct points");
-    std::vector<Vec2<T>> h(2 * p.size());
+    detail::SmallList<Vec2<T>, 4 * kInline> h;
+    for (std::size_t i = 0; i < 2 * p.size(); ++i) h.push_back(Vec2<T>::Zero());
     std::size_t k = 0;
     auto turn = [&](std::size_t i, const Vec2<T>& c) { return orient(widen(h[i - 2]), widen(h[i - 1]), widen(c)); };
     for (const Vec2<T>& q : p) {
@@ -349,9 +391,9 @@ class ConvexPolygon {
       while (k >= lower && turn(k, p[i]) <= 0) --k;
       h[k++] = p[i];
     }
-    h.resize(k - 1);
+    h.resize_down(k - 1);
     if (h.size() < 3) return ShapeError(Error::Collinear, -1, "points are all collinear");
-    return make(std::span<const Vec2<T>>(h));
+    return make(h.span());
   }
   static Expected<ConvexPolygon> make(std::initializer_list<Vec2<T>> vertices) {
     return make(std::span<const Vec2<T>>(vertices.begin(), vertices.size()));

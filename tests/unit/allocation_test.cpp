@@ -1,0 +1,193 @@
+// The hot path does not allocate: every query on every pair of kinds (both orders, both scalars,
+// concrete and variant arguments), every translation and every successful factory of a shape
+// with at most 8 vertices. This executable replaces the global operator new and counts the calls
+// made while a check runs; a failure names the query and the pair that allocated.
+//
+// Building a compound owns memory (its children), so compounds are built before counting starts;
+// queries on them must still not allocate.
+
+#include "support.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <string>
+
+namespace {
+std::atomic<long> g_allocations{0};
+std::atomic<bool> g_counting{false};
+}  // namespace
+
+// Out of line: inlined into the standard containers, g++ pairs malloc with the sized delete and
+// warns of a mismatch (-Wmismatched-new-delete) that is not there.
+__attribute__((noinline)) void* operator new(std::size_t n) {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+__attribute__((noinline)) void* operator new[](std::size_t n) { return operator new(n); }
+__attribute__((noinline)) void operator delete(void* p) noexcept { std::free(p); }
+__attribute__((noinline)) void operator delete[](void* p) noexcept { std::free(p); }
+__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+__attribute__((noinline)) void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace collide::test {
+namespace {
+
+/// Runs f with allocation counting on; returns the number of operator new calls it made.
+template <class F>
+long allocations_in(F&& f) {
+  g_allocations.store(0);
+  g_counting.store(true);
+  f();
+  g_counting.store(false);
+  return g_allocations.load();
+}
+
+/// Keeps a result alive so that the optimiser cannot drop the call that made it.
+template <class V>
+void keep(const V& v) {
+  asm volatile("" : : "r"(&v) : "memory");
+}
+
+template <class T>
+class Allocation : public ::testing::Test {};
+TYPED_TEST_SUITE(Allocation, Scalars);
+
+/// Every pair query, both orders, on overlapping, touching and separated configurations.
+template <ShapeKind KA, ShapeKind KB, Scalar T>
+void check_pair_queries() {
+  const std::string label = pair_label<KA, KB>();
+  for (const T x : {T(0.5), T(2), T(5)}) {
+    const auto a = make_kind<KA, T>(Vec2<T>(0, 0), T(1));
+    const auto b = make_kind<KB, T>(Vec2<T>(x, T(0.25)), T(1));
+    const Shape<T> va(a), vb(b);
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(overlaps(a, b));
+                keep(overlaps(b, a));
+                keep(overlaps(va, vb));
+              }))
+        << "overlaps " << label << " at x = " << x;
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(contact(a, b));
+                keep(contact(b, a));
+                keep(contact(va, vb));
+              }))
+        << "contact " << label << " at x = " << x;
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(resolve(a, b));
+                keep(resolve(b, a));
+                keep(resolve(va, vb));
+              }))
+        << "resolve " << label << " at x = " << x;
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(distance(a, b));
+                keep(distance(va, vb));
+              }))
+        << "distance " << label << " at x = " << x;
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(overlap_tolerance(a, b));
+                keep(rounding_tolerance(a, b));
+                keep(resolve_margin(a, b, T(1)));
+              }))
+        << "tolerances " << label << " at x = " << x;
+  }
+}
+
+/// Every single-shape query on a shape of kind K.
+template <ShapeKind K, Scalar T>
+void check_shape_queries() {
+  const std::string label(name(K));
+  const auto s = make_kind<K, T>(Vec2<T>(T(1), T(-2)), T(1.5));
+  const Shape<T> vs(s);
+  const Ray<T> hit{Vec2<T>(T(-10), T(-2)), Vec2<T>(T(1), T(0))};
+  const Ray<T> miss{Vec2<T>(T(-10), T(30)), Vec2<T>(T(1), T(0))};
+  EXPECT_EQ(0, allocations_in([&] {
+              keep(raycast(s, hit, T(100)));
+              keep(raycast(s, miss, T(100)));
+              keep(raycast(vs, hit, T(100)));
+            }))
+      << "raycast " << label;
+  EXPECT_EQ(0, allocations_in([&] {
+              keep(contains(s, Vec2<T>(T(1), T(-2))));
+              keep(contains(s, Vec2<T>(T(9), T(9))));
+              keep(contains(vs, Vec2<T>(T(1), T(-2))));
+            }))
+      << "contains " << label;
+  EXPECT_EQ(0, allocations_in([&] {
+              keep(bounds(s));
+              keep(bounds(vs));
+            }))
+      << "bounds " << label;
+  if constexpr (K != ShapeKind::Compound) {
+    // A compound owns its children: moving one builds a new list. Every primitive moves in place.
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(translated(s, Vec2<T>(T(3), T(0.5))));
+                keep(translated(vs, Vec2<T>(T(3), T(0.5))));
+              }))
+        << "translated " << label;
+  }
+}
+
+TYPED_TEST(Allocation, NoPairQueryAllocatesForAnyPairInEitherOrder) {
+  using T = TypeParam;
+  for_each_pair([]<ShapeKind A, ShapeKind B>() { check_pair_queries<A, B, T>(); });
+}
+
+TYPED_TEST(Allocation, NoShapeQueryOrTranslationAllocatesForAnyKind) {
+  using T = TypeParam;
+  for_each_kind([]<ShapeKind K>() { check_shape_queries<K, T>(); });
+}
+
+TYPED_TEST(Allocation, SuccessfulFactoriesDoNotAllocate) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const V octagon[] = {V(2, 0), V(1.5, 1.5), V(0, 2), V(-1.5, 1.5), V(-2, 0), V(-1.5, -1.5), V(0, -2), V(1.5, -1.5)};
+  // Points whose hull is the octagon above, with interior points and repeats mixed in.
+  const V cloud[] = {V(0, 0),  V(2, 0),  V(1.5, 1.5), V(0, 2),  V(0.5, 0.5),  V(-1.5, 1.5),
+                     V(-2, 0), V(2, 0),  V(-1.5, -1.5), V(0, -2), V(1.5, -1.5), V(-1, 1)};
+  EXPECT_EQ(0, allocations_in([&] {
+              keep(Circle<T>::make(V(1, 2), T(3)));
+              keep(Aabb<T>::make(V(-1, -2), V(3, 4)));
+              keep(Obb<T>::make(V(1, 2), V(3, 1), T(0.7)));
+              keep(Obb<T>::make_with_axis(V(1, 2), V(3, 1), V(T(0.6), T(0.8))));
+              keep(Obb<T>::from_corners(V(0, 0), V(2, 0), V(2, 1), V(0, 1)));
+              keep(Capsule<T>::make(V(0, 0), V(3, 1), T(0.5)));
+              keep(ConvexPolygon<T>::make(std::span<const V>(octagon)));
+              keep(ConvexPolygon<T>::make_hull(std::span<const V>(cloud)));
+            }));
+}
+
+TYPED_TEST(Allocation, RejectedFactoriesCarryTheirErrorWithoutAllocating) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const V reflex[] = {V(0, 0), V(2, 0), V(1, 0.25), V(2, 2), V(0, 2)};
+  long count = 0;
+  std::string message;
+  count = allocations_in([&] {
+    const auto bad = ConvexPolygon<T>::make(std::span<const V>(reflex));
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().code(), Error::NonConvex);
+    keep(bad);
+    const auto neg = Circle<T>::make(V(0, 0), T(-1));
+    ASSERT_FALSE(neg);
+    EXPECT_EQ(neg.error().code(), Error::NegativeRadius);
+    keep(neg);
+  });
+  EXPECT_EQ(0, count);
+  const auto bad = ConvexPolygon<T>::make(std::span<const V>(reflex));
+  message = bad.error().what();
+  EXPECT_EQ(message, "NonConvex: polygon turns the wrong way (index 2)");
+}
+
+TEST(Allocation, CounterSeesAnAllocation) {
+  // The counting operator new is live: without this, every check above would pass vacuously.
+  EXPECT_EQ(1, allocations_in([] {
+              auto* p = new int(3);
+              keep(*p);
+              delete p;
+            }));
+}
+
+}  // namespace
+}  // namespace collide::test
