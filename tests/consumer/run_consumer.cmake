@@ -1,6 +1,11 @@
-# Script mode (cmake -P): install, configure the consumer app against the install, build, run.
-# Inputs: COLLIDE_BUILD_DIR, APP_SOURCE_DIR, WORK_DIR, APP_GENERATOR, APP_CXX_COMPILER, APP_LAUNCHER.
-foreach(var COLLIDE_BUILD_DIR APP_SOURCE_DIR WORK_DIR APP_GENERATOR APP_CXX_COMPILER)
+# Script mode (cmake -P): builds and runs a separate consumer project the way a game would.
+# MODE find_package: install this build into a fresh prefix, check its pkg-config file, then
+#   configure tests/consumer/app against that prefix only, build and run it.
+# MODE fetch_content: configure tests/consumer/fetch_app, which takes lib/ with FetchContent from
+#   this checkout, build and run it, install it and check that nothing of collide was installed.
+# Inputs: MODE, COLLIDE_BUILD_DIR, COLLIDE_SOURCE_DIR, WORK_DIR, APP_GENERATOR, APP_CXX_COMPILER,
+# APP_LAUNCHER (optional).
+foreach(var MODE COLLIDE_BUILD_DIR COLLIDE_SOURCE_DIR WORK_DIR APP_GENERATOR APP_CXX_COMPILER)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "run_consumer.cmake: ${var} is not set")
   endif()
@@ -12,27 +17,52 @@ file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
 function(run_step what)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "consumer: ${what} failed (${rc}): ${ARGN}")
+    message(FATAL_ERROR "consumer: ${what} failed (${rc}): ${ARGN}\n${out}\n${err}")
   endif()
   message(STATUS "consumer: ${what}: ok")
+  set(step_output "${out}" PARENT_SCOPE)
 endfunction()
 
-run_step("install into ${prefix}" ${CMAKE_COMMAND} --install "${COLLIDE_BUILD_DIR}" --prefix "${prefix}")
-
-set(launcher_arg "")
+set(configure_args -G "${APP_GENERATOR}" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=${APP_CXX_COMPILER}"
+    -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON -DCMAKE_FIND_PACKAGE_NO_SYSTEM_PACKAGE_REGISTRY=ON)
 if(APP_LAUNCHER)
-  set(launcher_arg "-DCMAKE_CXX_COMPILER_LAUNCHER=${APP_LAUNCHER}")
+  list(APPEND configure_args "-DCMAKE_CXX_COMPILER_LAUNCHER=${APP_LAUNCHER}")
 endif()
-# Only the fresh prefix may satisfy find_package: no package registry, no build tree.
-run_step("configure the consumer app"
-  ${CMAKE_COMMAND} -S "${APP_SOURCE_DIR}" -B "${app_build}" -G "${APP_GENERATOR}"
-    -DCMAKE_BUILD_TYPE=Release
-    "-DCMAKE_CXX_COMPILER=${APP_CXX_COMPILER}" ${launcher_arg}
-    "-DCMAKE_PREFIX_PATH=${prefix}"
-    -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON
-    -DCMAKE_FIND_PACKAGE_NO_SYSTEM_PACKAGE_REGISTRY=ON
-    "-DCOLLIDE_EXPECTED_PREFIX=${prefix}")
-run_step("build the consumer app" ${CMAKE_COMMAND} --build "${app_build}")
-run_step("run the consumer app" "${app_build}/collide_consumer")
+
+if(MODE STREQUAL "find_package")
+  run_step("install into ${prefix}" ${CMAKE_COMMAND} --install "${COLLIDE_BUILD_DIR}" --prefix "${prefix}")
+
+  # pkg-config: the installed file names the installed headers, wherever the prefix was moved.
+  find_program(PKG_CONFIG pkg-config REQUIRED)
+  set(ENV{PKG_CONFIG_PATH} "${prefix}/share/pkgconfig")
+  run_step("pkg-config finds collide" ${PKG_CONFIG} --cflags collide)
+  string(STRIP "${step_output}" cflags)
+  separate_arguments(cflags UNIX_COMMAND "${cflags}")
+  run_step("a file compiles with pkg-config's flags alone"
+    ${APP_CXX_COMPILER} -std=c++20 -fsyntax-only ${cflags} -x c++ "${COLLIDE_SOURCE_DIR}/tests/consumer/app/main.cpp")
+
+  # Only the fresh prefix may satisfy find_package: no package registry, no build tree.
+  run_step("configure the consumer app"
+    ${CMAKE_COMMAND} -S "${COLLIDE_SOURCE_DIR}/tests/consumer/app" -B "${app_build}" ${configure_args}
+      "-DCMAKE_PREFIX_PATH=${prefix}" "-DCOLLIDE_EXPECTED_PREFIX=${prefix}")
+  run_step("build the consumer app (strict warnings, collide's headers not system)" ${CMAKE_COMMAND} --build "${app_build}")
+  run_step("run the consumer app" "${app_build}/collide_consumer")
+elseif(MODE STREQUAL "fetch_content")
+  run_step("configure the FetchContent consumer"
+    ${CMAKE_COMMAND} -S "${COLLIDE_SOURCE_DIR}/tests/consumer/fetch_app" -B "${app_build}" ${configure_args}
+      "-DFETCHCONTENT_SOURCE_DIR_COLLIDE=${COLLIDE_SOURCE_DIR}" -DFETCHCONTENT_FULLY_DISCONNECTED=ON)
+  run_step("build the FetchContent consumer (strict warnings)" ${CMAKE_COMMAND} --build "${app_build}")
+  run_step("run the FetchContent consumer" "${app_build}/collide_fetch_consumer")
+  run_step("install the game" ${CMAKE_COMMAND} --install "${app_build}" --prefix "${prefix}")
+  file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
+  foreach(f IN LISTS installed)
+    if(f MATCHES "collide/|collideConfig|collide\\.pc")
+      message(FATAL_ERROR "consumer: installing the game also installed collide's ${f}")
+    endif()
+  endforeach()
+  message(STATUS "consumer: the game's install holds only its own files: ${installed}")
+else()
+  message(FATAL_ERROR "run_consumer.cmake: unknown MODE '${MODE}'")
+endif()

@@ -31,7 +31,7 @@ inline Term two_product(double a, double b) noexcept {
 
 /// Sign of a sum of exact products, by Shewchuk's grow-expansion: the components stay
 /// non-overlapping and sorted by magnitude, so the last non-zero one carries the sign.
-template <int N>
+template <std::size_t N>
 int exact_sign_of_sum(const double (&terms)[N]) noexcept {
   double e[2 * N + 1];
   int n = 0;

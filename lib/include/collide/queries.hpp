@@ -283,9 +283,9 @@ inline ContactC contact_cores_at_scale(const Core& p, const Core& q) {
     }
   }
   const Calc reach = ref.radius + inc.radius;
-  for (int i = 0; i < icount && !missed; ++i) {
+  for (std::size_t i = 0; i < std::size_t(icount) && !missed; ++i) {
     const Calc s = (ip[i] - r1).dot(nr);
-    if (s <= reach) out.points[out.count++] = ip[i] + nr * ((ref.radius - s - inc.radius) * 0.5);
+    if (s <= reach) out.points[std::size_t(out.count++)] = ip[i] + nr * ((ref.radius - s - inc.radius) * 0.5);
   }
   if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
   if (out.count == 0) {
@@ -348,7 +348,7 @@ Contact<T> to_scalar(const ContactC& c) {
   out.normal = c.normal.template cast<T>();
   out.depth = static_cast<T>(c.depth);
   out.count = c.count;
-  for (int i = 0; i < 2; ++i) out.points[i] = c.points[i].template cast<T>();
+  for (std::size_t i = 0; i < 2; ++i) out.points[i] = c.points[i].template cast<T>();
   return out;
 }
 
