@@ -34,18 +34,21 @@ template <Scalar T>
 Aabb<T> bounds(const Aabb<T>& s) noexcept {
   return s;
 }
+/// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Circle<T>& s) noexcept {
   const Vec2c c = widen(s.center());
   const Calc r = s.radius();
   return bounds_from_calc<T>((c.array() - r).matrix(), (c.array() + r).matrix());
 }
+/// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Capsule<T>& s) noexcept {
   const Vec2c a = widen(s.a()), b = widen(s.b());
   const Calc r = s.radius();
   return bounds_from_calc<T>((a.cwiseMin(b).array() - r).matrix(), (a.cwiseMax(b).array() + r).matrix());
 }
+/// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Obb<T>& s) noexcept {
   const Vec2c c = widen(s.center()), u = widen(s.axis());
@@ -54,6 +57,7 @@ Aabb<T> bounds(const Obb<T>& s) noexcept {
   const Vec2c ext = (u * hx).cwiseAbs() + (v * hy).cwiseAbs();
   return bounds_from_calc<T>(c - ext, c + ext);
 }
+/// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const ConvexPolygon<T>& s) noexcept {
   Vec2<T> lo = s[0], hi = s[0];
@@ -63,6 +67,7 @@ Aabb<T> bounds(const ConvexPolygon<T>& s) noexcept {
   }
   return detail::AabbAccess::unchecked<T>(lo, hi);
 }
+/// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Primitive<T>& s) noexcept {
   return std::visit([](const auto& x) { return bounds(x); }, s);
@@ -85,8 +90,10 @@ class Compound {
     // Unchecked: children's boxes may exceed max_magnitude<T>() (see AabbAccess).
     return Compound(std::move(children), detail::AabbAccess::unchecked<T>(lo, hi));
   }
+  /// As make(), throwing the ShapeError.
   explicit Compound(std::vector<Primitive<T>> children) : Compound(make(std::move(children)).value()) {}
 
+  /// The children, in the order given.
   const std::vector<Primitive<T>>& children() const noexcept { return children_; }
   /// Cached conservative bounding box of all children.
   const Aabb<T>& bounds() const noexcept { return bounds_; }
@@ -97,6 +104,7 @@ class Compound {
   Aabb<T> bounds_;
 };
 
+/// The compound's cached box (the union of its children's boxes).
 template <Scalar T>
 Aabb<T> bounds(const Compound<T>& s) noexcept {
   return s.bounds();

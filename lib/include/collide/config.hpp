@@ -21,6 +21,7 @@ using Vec2 = Eigen::Matrix<T, 2, 1>;
 /// Queries compute in double whatever the stored scalar: float inputs convert exactly, and the
 /// product of two floats is exact in double, so float shapes lose nothing before the first sum.
 using Calc = double;
+/// A vector in the computation's precision.
 using Vec2c = Eigen::Matrix<Calc, 2, 1>;
 
 /// Largest magnitude a stored value may have; larger values are rejected with Error::OutOfRange.

@@ -91,7 +91,9 @@ class ShapeError : public std::exception {
 template <class V>
 class Expected {
  public:
+  /// Holds a value.
   Expected(V v) : data_(std::move(v)) {}                    // NOLINT(google-explicit-constructor)
+  /// Holds the error that rejected the value.
   Expected(ShapeError e) : data_(std::move(e)) {}           // NOLINT(google-explicit-constructor)
   /// True when a value is held.
   bool has_value() const noexcept { return data_.index() == 0; }

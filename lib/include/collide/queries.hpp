@@ -39,8 +39,10 @@ namespace collide {
 // ---------------------------------------------------------------------------------------------
 // Shape type traits.
 
+/// Shape type -> its scalar (float or double), as `type`; for the six shapes and their variants.
 template <class S>
 struct ScalarOf;
+/// @cond COLLIDE_SPECIALISATIONS
 template <Scalar T> struct ScalarOf<Circle<T>> { using type = T; };
 template <Scalar T> struct ScalarOf<Aabb<T>> { using type = T; };
 template <Scalar T> struct ScalarOf<Obb<T>> { using type = T; };
@@ -51,6 +53,7 @@ template <Scalar T, class... Rest>
 struct ScalarOf<std::variant<Circle<T>, Rest...>> {
   using type = T;
 };
+/// @endcond
 
 /// The scalar (float or double) of any shape type.
 template <class S>
@@ -385,19 +388,25 @@ std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
 // ---------------------------------------------------------------------------------------------
 // Translation.
 
+/// The shape moved by v: every stored point coordinate plus v, rounded to T. Errors: those of the
+/// shape's factory (NonFinite, OutOfRange when the move leaves the representable range).
 template <Scalar T>
 Expected<Circle<T>> translated(const Circle<T>& s, const Vec2<T>& v) {
   return Circle<T>::make(s.center() + v, s.radius());
 }
+/// The shape moved by v, rounded to T. Errors: NonFinite, OutOfRange (as its factory names them).
 template <Scalar T>
 Expected<Aabb<T>> translated(const Aabb<T>& s, const Vec2<T>& v) {
   return Aabb<T>::make(s.min() + v, s.max() + v);
 }
+/// The box moved by v: its centre plus v rounded to T, its axis and half extents unchanged.
+/// Errors: NonFinite, OutOfRange.
 template <Scalar T>
 Expected<Obb<T>> translated(const Obb<T>& s, const Vec2<T>& v) {
   // Keep the stored axis bit for bit: renormalising would rotate the box by rounding.
   return detail::ObbAccess::with_axis_of<T>(Vec2<T>(s.center() + v), s.half_extents(), s);
 }
+/// The shape moved by v, rounded to T. Errors: NonFinite, OutOfRange (as its factory names them).
 template <Scalar T>
 Expected<Capsule<T>> translated(const Capsule<T>& s, const Vec2<T>& v) {
   return Capsule<T>::make(s.a() + v, s.b() + v, s.radius());
@@ -415,6 +424,8 @@ Expected<ConvexPolygon<T>> translated(const ConvexPolygon<T>& s, const Vec2<T>& 
   }
   return ConvexPolygon<T>::make_hull(moved.span());
 }
+/// Every child moved by v (allocates: the compound owns its children). Errors: the first child's
+/// error, as that child's factory names it.
 template <Scalar T>
 Expected<Compound<T>> translated(const Compound<T>& s, const Vec2<T>& v) {
   std::vector<Primitive<T>> moved;

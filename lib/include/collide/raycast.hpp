@@ -37,8 +37,8 @@ namespace collide {
 /// A ray: origin + t * direction, t >= 0. direction need not be normalised.
 template <Scalar T>
 struct Ray {
-  Vec2<T> origin;
-  Vec2<T> direction;
+  Vec2<T> origin;     ///< where the ray starts (t = 0)
+  Vec2<T> direction;  ///< the ray's step per unit of t; any length, (0, 0) only tests the origin
 };
 
 /// Where a ray first meets a shape.

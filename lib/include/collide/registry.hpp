@@ -23,7 +23,9 @@ namespace collide {
 /// Shape kinds, in the order of the Shape variant's alternatives.
 enum class ShapeKind : std::uint8_t { Circle, Aabb, Obb, Capsule, Polygon, Compound };
 
+/// Number of shape kinds.
 inline constexpr std::size_t kKindCount = 6;
+/// Every kind, in ShapeKind order.
 inline constexpr std::array<ShapeKind, kKindCount> kKinds = {ShapeKind::Circle, ShapeKind::Aabb,
                                                              ShapeKind::Obb,    ShapeKind::Capsule,
                                                              ShapeKind::Polygon, ShapeKind::Compound};
@@ -36,6 +38,7 @@ constexpr std::string_view name(ShapeKind k) noexcept {
   return names[static_cast<std::size_t>(k)];
 }
 
+/// The kind named `s` (as name(ShapeKind) spells it), or nullopt.
 constexpr std::optional<ShapeKind> kind_from_name(std::string_view s) noexcept {
   for (ShapeKind k : kKinds) {
     if (name(k) == s) return k;
@@ -45,11 +48,13 @@ constexpr std::optional<ShapeKind> kind_from_name(std::string_view s) noexcept {
 
 /// An unordered pair of kinds, stored with first <= second.
 struct KindPair {
-  ShapeKind first;
-  ShapeKind second;
+  ShapeKind first;   ///< the kind that comes first in ShapeKind order
+  ShapeKind second;  ///< the other kind (equal to first for a pair of one kind)
+  /// Same kinds in the same slots.
   friend constexpr bool operator==(const KindPair&, const KindPair&) = default;
 };
 
+/// Number of unordered pairs of kinds (21).
 inline constexpr std::size_t kPairCount = kKindCount * (kKindCount + 1) / 2;
 
 /// All 21 unordered pairs, in row order: (circle, circle), (circle, aabb), ..., (compound, compound).
@@ -84,20 +89,24 @@ constexpr std::size_t pair_index(KindPair p) noexcept {
   return kPairCount;
 }
 
+/// The unordered pair of a and b, stored in ShapeKind order.
 constexpr KindPair make_pair(ShapeKind a, ShapeKind b) noexcept {
   return static_cast<int>(a) <= static_cast<int>(b) ? KindPair{a, b} : KindPair{b, a};
 }
 
-/// Kind -> shape type.
+/// Kind -> shape type, as `type`.
 template <ShapeKind K, Scalar T>
 struct KindTraits;
+/// @cond COLLIDE_SPECIALISATIONS
 template <Scalar T> struct KindTraits<ShapeKind::Circle, T> { using type = Circle<T>; };
 template <Scalar T> struct KindTraits<ShapeKind::Aabb, T> { using type = Aabb<T>; };
 template <Scalar T> struct KindTraits<ShapeKind::Obb, T> { using type = Obb<T>; };
 template <Scalar T> struct KindTraits<ShapeKind::Capsule, T> { using type = Capsule<T>; };
 template <Scalar T> struct KindTraits<ShapeKind::Polygon, T> { using type = ConvexPolygon<T>; };
 template <Scalar T> struct KindTraits<ShapeKind::Compound, T> { using type = Compound<T>; };
+/// @endcond
 
+/// The shape type of kind K with scalar T, e.g. ShapeOf<ShapeKind::Circle, float> = Circle<float>.
 template <ShapeKind K, Scalar T>
 using ShapeOf = typename KindTraits<K, T>::type;
 
@@ -105,29 +114,34 @@ using ShapeOf = typename KindTraits<K, T>::type;
 template <Scalar T>
 using Shape = std::variant<Circle<T>, Aabb<T>, Obb<T>, Capsule<T>, ConvexPolygon<T>, Compound<T>>;
 
-/// Shape type -> kind.
+/// Shape type -> kind, as `value`.
 template <class S>
 struct KindOf;
+/// @cond COLLIDE_SPECIALISATIONS
 template <Scalar T> struct KindOf<Circle<T>> { static constexpr ShapeKind value = ShapeKind::Circle; };
 template <Scalar T> struct KindOf<Aabb<T>> { static constexpr ShapeKind value = ShapeKind::Aabb; };
 template <Scalar T> struct KindOf<Obb<T>> { static constexpr ShapeKind value = ShapeKind::Obb; };
 template <Scalar T> struct KindOf<Capsule<T>> { static constexpr ShapeKind value = ShapeKind::Capsule; };
 template <Scalar T> struct KindOf<ConvexPolygon<T>> { static constexpr ShapeKind value = ShapeKind::Polygon; };
 template <Scalar T> struct KindOf<Compound<T>> { static constexpr ShapeKind value = ShapeKind::Compound; };
+/// @endcond
 
+/// The kind of shape type S.
 template <class S>
 inline constexpr ShapeKind kind_of_v = KindOf<S>::value;
 
+/// The kind of the shape a variant holds.
 template <Scalar T>
 constexpr ShapeKind kind(const Shape<T>& s) noexcept {
   return static_cast<ShapeKind>(s.index());
 }
+/// The kind of the primitive a variant holds.
 template <Scalar T>
 constexpr ShapeKind kind(const Primitive<T>& s) noexcept {
   return static_cast<ShapeKind>(s.index());
 }
 
-/// Calls f.template operator()<K>() for every kind, in order.
+/// Calls `f.template operator()<K>()` for every kind, in order.
 template <class F>
 constexpr void for_each_kind(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -135,7 +149,7 @@ constexpr void for_each_kind(F&& f) {
   }(std::make_index_sequence<kKindCount>{});
 }
 
-/// Calls f.template operator()<A, B>() for every unordered pair (A <= B), in kPairs order.
+/// Calls `f.template operator()<A, B>()` for every unordered pair (A <= B), in kPairs order.
 template <class F>
 constexpr void for_each_pair(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -143,7 +157,7 @@ constexpr void for_each_pair(F&& f) {
   }(std::make_index_sequence<kPairCount>{});
 }
 
-/// Calls f.template operator()<K>() for the kind known only at run time; returns its result.
+/// Calls `f.template operator()<K>()` for the kind known only at run time; returns its result.
 template <class F>
 constexpr decltype(auto) visit_kind(ShapeKind k, F&& f) {
   switch (k) {
@@ -172,21 +186,26 @@ namespace collide {
 inline Circle<double> widened(const Circle<float>& s) {
   return Circle<double>(s.center().cast<double>(), s.radius());
 }
+/// The same shape with double storage (exact: the same point set).
 inline Aabb<double> widened(const Aabb<float>& s) {
   return Aabb<double>(s.min().cast<double>(), s.max().cast<double>());
 }
+/// The same shape with double storage (exact: the same point set).
 inline Obb<double> widened(const Obb<float>& s) {
   return detail::ObbAccess::with_axis_of<double>(s.center().cast<double>(), s.half_extents().cast<double>(), s)
       .value();
 }
+/// The same shape with double storage (exact: the same point set).
 inline Capsule<double> widened(const Capsule<float>& s) {
   return Capsule<double>(s.a().cast<double>(), s.b().cast<double>(), s.radius());
 }
+/// The same shape with double storage (exact: the same point set).
 inline ConvexPolygon<double> widened(const ConvexPolygon<float>& s) {
   std::vector<Vec2<double>> v;
   for (const Vec2<float>& p : s.vertices()) v.push_back(p.cast<double>());
   return ConvexPolygon<double>(std::span<const Vec2<double>>(v));
 }
+/// The same shape with double storage (exact: the same point set).
 inline Compound<double> widened(const Compound<float>& s) {
   std::vector<Primitive<double>> c;
   for (const Primitive<float>& p : s.children()) {
@@ -194,6 +213,7 @@ inline Compound<double> widened(const Compound<float>& s) {
   }
   return Compound<double>(std::move(c));
 }
+/// The same shape with double storage (exact: the same point set).
 inline Shape<double> widened(const Shape<float>& s) {
   return std::visit([](const auto& x) { return Shape<double>(widened(x)); }, s);
 }

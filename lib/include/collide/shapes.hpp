@@ -104,9 +104,12 @@ class Circle {
     if (radius < T(0)) return ShapeError(Error::NegativeRadius, -1, "circle radius is negative");
     return Circle(detail::Unchecked{}, center, radius);
   }
+  /// As make(), throwing the ShapeError.
   Circle(const Vec2<T>& center, T radius) : Circle(make(center, radius).value()) {}
 
+  /// Centre.
   const Vec2<T>& center() const noexcept { return center_; }
+  /// Radius, >= 0.
   T radius() const noexcept { return radius_; }
 
  private:
@@ -130,9 +133,12 @@ class Aabb {
     }
     return Aabb(detail::Unchecked{}, min, max);
   }
+  /// As make(), throwing the ShapeError.
   Aabb(const Vec2<T>& min, const Vec2<T>& max) : Aabb(make(min, max).value()) {}
 
+  /// Lower-left corner (min <= max on each axis).
   const Vec2<T>& min() const noexcept { return min_; }
+  /// Upper-right corner.
   const Vec2<T>& max() const noexcept { return max_; }
 
  private:
@@ -209,10 +215,13 @@ class Obb {
     const Vec2<T> half(static_cast<T>(l1 * 0.5), static_cast<T>(l2 * 0.5));
     return Obb(detail::Unchecked{}, c.template cast<T>(), half, u.template cast<T>());
   }
+  /// As make(center, half_extents, angle), throwing the ShapeError.
   Obb(const Vec2<T>& center, const Vec2<T>& half_extents, T angle)
       : Obb(make(center, half_extents, angle).value()) {}
 
+  /// Centre.
   const Vec2<T>& center() const noexcept { return center_; }
+  /// Half extents along the local x axis (axis()) and the local y axis (axis() turned +90 degrees), >= 0.
   const Vec2<T>& half_extents() const noexcept { return half_; }
   /// Unit direction of the local x axis (rounded to T).
   const Vec2<T>& axis() const noexcept { return axis_; }
@@ -263,10 +272,14 @@ class Capsule {
     if (radius < T(0)) return ShapeError(Error::NegativeRadius, -1, "capsule radius is negative");
     return Capsule(detail::Unchecked{}, a, b, radius);
   }
+  /// As make(), throwing the ShapeError.
   Capsule(const Vec2<T>& a, const Vec2<T>& b, T radius) : Capsule(make(a, b, radius).value()) {}
 
+  /// First end of the core segment.
   const Vec2<T>& a() const noexcept { return a_; }
+  /// Second end of the core segment (may equal a(): the capsule is then a circle).
   const Vec2<T>& b() const noexcept { return b_; }
+  /// Radius around the segment, >= 0.
   T radius() const noexcept { return radius_; }
 
  private:
@@ -281,6 +294,7 @@ class Capsule {
 template <Scalar T>
 class ConvexPolygon {
  public:
+  /// Polygons of up to this many vertices are stored without a heap allocation.
   static constexpr std::size_t kInline = 8;
 
   /// Accepts either winding (normalised to counter-clockwise). Repeated consecutive vertices are
@@ -395,17 +409,22 @@ class ConvexPolygon {
     if (h.size() < 3) return ShapeError(Error::Collinear, -1, "points are all collinear");
     return make(h.span());
   }
+  /// As make(std::span), from a braced list.
   static Expected<ConvexPolygon> make(std::initializer_list<Vec2<T>> vertices) {
     return make(std::span<const Vec2<T>>(vertices.begin(), vertices.size()));
   }
+  /// As make(), throwing the ShapeError.
   explicit ConvexPolygon(std::span<const Vec2<T>> vertices) : ConvexPolygon(make(vertices).value()) {}
+  /// As make(), from a braced list, throwing the ShapeError.
   ConvexPolygon(std::initializer_list<Vec2<T>> vertices) : ConvexPolygon(make(vertices).value()) {}
 
   /// Counter-clockwise vertices.
   std::span<const Vec2<T>> vertices() const noexcept {
     return {size_ > kInline ? heap_.data() : inline_.data(), size_};
   }
+  /// Number of vertices, >= 3.
   std::size_t size() const noexcept { return size_; }
+  /// Vertex i, counter-clockwise. Precondition: i < size().
   const Vec2<T>& operator[](std::size_t i) const noexcept { return vertices()[i]; }
 
  private:
