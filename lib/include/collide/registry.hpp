@@ -72,15 +72,6 @@ inline std::string name(KindPair p) {
   return std::string(name(p.first)) + "_" + std::string(name(p.second));
 }
 
-/// Accepts either order ("aabb_circle" == "circle_aabb").
-inline std::optional<KindPair> pair_from_name(std::string_view s) {
-  for (const KindPair& p : kPairs) {
-    if (name(p) == s) return p;
-    if (std::string(name(p.second)) + "_" + std::string(name(p.first)) == s) return p;
-  }
-  return std::nullopt;
-}
-
 /// Position of a pair in kPairs.
 constexpr std::size_t pair_index(KindPair p) noexcept {
   for (std::size_t i = 0; i < kPairCount; ++i) {
