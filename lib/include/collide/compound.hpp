@@ -73,7 +73,7 @@ Aabb<T> bounds(const Primitive<T>& s) noexcept {
   return std::visit([](const auto& x) { return bounds(x); }, s);
 }
 
-/// The lecture's "list of geometries": the union of its children, with a cached bounding box that
+/// A body made of several shapes (a "list of geometries"): the union of its children, with a cached bounding box that
 /// every query checks before looking at any child.
 template <Scalar T>
 class Compound {

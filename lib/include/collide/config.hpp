@@ -37,6 +37,18 @@ constexpr T max_magnitude() noexcept {
   }
 }
 
+/// Double's unit roundoff: the largest relative error of one rounded operation.
+inline constexpr Calc kUnitRoundoff = 0x1p-53;
+
+/// Contact generation: two faces whose normalised alignment with the reference normal differs by
+/// less than this are equally anti-parallel (a polygon side split by a vertex one ulp off its line).
+inline constexpr Calc kFaceTieTolerance = 0x1p-40;
+
+/// Contact generation: an incident face more than this many times the squared length of the
+/// reference face is not clipped against it (its clipped ends would move by more than the
+/// reference face is long); the witness point is used instead.
+inline constexpr Calc kClipLengthRatio = 0x1p40;
+
 /// Absolute floor of every error bound (about 3.1e-151). A bound, not the typical error: shapes
 /// whose every value is below 2^-400 are rescaled exactly by a power of two before any rounded
 /// computation (see detail::tiny_scale), so their answers are relative-accurate; the floor covers

@@ -52,19 +52,19 @@ struct RayHit {
 namespace detail {
 
 /// The ray in the computation type with a unit direction; s is the distance along it.
-struct RayC {
+struct UnitRay {
   Vec2c o;
   Vec2c u;
   Calc s_max;  ///< max_t * |direction| (may be +inf after overflow: a bound only)
   Calc pad;    ///< absolute padding of early-out boxes, a fraction of the error bound
 };
 
-struct HitC {
+struct UnitRayHit {
   Calc s;
   Vec2c normal;
 };
 
-inline bool closer(const std::optional<HitC>& h, const std::optional<HitC>& best) {
+inline bool closer(const std::optional<UnitRayHit>& h, const std::optional<UnitRayHit>& best) {
   return h && (!best || h->s < best->s);
 }
 
@@ -75,7 +75,7 @@ struct Span {
 };
 
 /// The part of the ray (within s_max) inside the padded box, or nothing if it misses.
-inline std::optional<Span> ray_box_span(const Vec2c& lo, const Vec2c& hi, const RayC& r) noexcept {
+inline std::optional<Span> ray_box_span(const Vec2c& lo, const Vec2c& hi, const UnitRay& r) noexcept {
   Calc enter = 0, exit = r.s_max;
   for (int i = 0; i < 2; ++i) {
     const Calc l = lo[i] - r.pad, h = hi[i] + r.pad;
@@ -94,12 +94,12 @@ inline std::optional<Span> ray_box_span(const Vec2c& lo, const Vec2c& hi, const 
 
 /// Ray against a disk (centre c, radius r >= 0). Robust form: the perpendicular offset is computed
 /// directly rather than as a difference of squares, so grazing rays lose no precision.
-inline std::optional<HitC> ray_disk(const Vec2c& c, Calc r, const RayC& ray) noexcept {
+inline std::optional<UnitRayHit> ray_disk(const Vec2c& c, Calc r, const UnitRay& ray) noexcept {
   const Vec2c m = ray.o - c;
   const Calc b = m.dot(ray.u);
   const Calc r2 = r * r;
   if (m.squaredNorm() <= r2) {
-    return HitC{0, m != Vec2c::Zero() ? unit_of(m) : Vec2c(-ray.u)};
+    return UnitRayHit{0, m != Vec2c::Zero() ? unit_of(m) : Vec2c(-ray.u)};
   }
   if (b > 0) return std::nullopt;  // outside and moving away
   const Vec2c h = m - ray.u * b;
@@ -107,14 +107,14 @@ inline std::optional<HitC> ray_disk(const Vec2c& c, Calc r, const RayC& ray) noe
   if (h2 > r2) return std::nullopt;
   const Calc s = std::max(Calc(0), -b - std::sqrt(r2 - h2));
   const Vec2c n = ray.o + ray.u * s - c;
-  return HitC{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
+  return UnitRayHit{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
 }
 
 /// Cyrus-Beck clipping against half-planes n_i . x <= n_i . p_i (outward normals, any length).
 /// `plane(i, n, p)` fills the i-th half-plane. A ray starting inside gets s = 0 and the normal of
 /// the face it is closest to leaving through backwards (the entering face), else -u.
 template <class Plane>
-std::optional<HitC> ray_half_planes(std::size_t count, Plane&& plane, const RayC& ray) {
+std::optional<UnitRayHit> ray_half_planes(std::size_t count, Plane&& plane, const UnitRay& ray) {
   Calc enter = -std::numeric_limits<Calc>::infinity(), exit = std::numeric_limits<Calc>::infinity();
   Vec2c enter_n = -ray.u;
   for (std::size_t i = 0; i < count; ++i) {
@@ -137,36 +137,36 @@ std::optional<HitC> ray_half_planes(std::size_t count, Plane&& plane, const RayC
     }
   }
   if (!(enter <= exit) || exit < 0 || enter > ray.s_max) return std::nullopt;
-  return HitC{std::max(Calc(0), enter), enter_n != Vec2c::Zero() ? unit_of(enter_n) : Vec2c(-ray.u)};
+  return UnitRayHit{std::max(Calc(0), enter), enter_n != Vec2c::Zero() ? unit_of(enter_n) : Vec2c(-ray.u)};
 }
 
 /// Ray against a closed segment [a, b] (zero thickness).
-inline std::optional<HitC> ray_segment(const Vec2c& a, const Vec2c& b, const RayC& ray) noexcept {
+inline std::optional<UnitRayHit> ray_segment(const Vec2c& a, const Vec2c& b, const UnitRay& ray) noexcept {
   const Vec2c w = b - a, ao = a - ray.o;
   const Calc den = cross(ray.u, w);
   if (den == 0) {
     if (cross(ao, ray.u) != 0) return std::nullopt;  // parallel, off the line
     const Calc sa = ao.dot(ray.u), sb = (b - ray.o).dot(ray.u);
     if (std::max(sa, sb) < 0) return std::nullopt;
-    return HitC{std::max(Calc(0), std::min(sa, sb)), Vec2c(-ray.u)};
+    return UnitRayHit{std::max(Calc(0), std::min(sa, sb)), Vec2c(-ray.u)};
   }
   const Calc s = cross(ao, w) / den;
   const Calc v = cross(ao, ray.u) / den;
   if (s < 0 || v < 0 || v > 1) return std::nullopt;
   Vec2c n = perp(w);
   if (n.dot(ray.u) > 0) n = -n;
-  return HitC{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
+  return UnitRayHit{s, n != Vec2c::Zero() ? unit_of(n) : Vec2c(-ray.u)};
 }
 
 /// Ray against a dilated core (point + r, segment + r, or convex polygon + 0).
-inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
+inline std::optional<UnitRayHit> ray_core(const Core& c, const UnitRay& ray) {
   if (c.size() == 1) return ray_disk(c[0], c.radius, ray);
   if (c.size() == 2) {
     if (!(c.radius > 0)) return ray_segment(c[0], c[1], ray);
     // Capsule: the union of the two end disks and the rectangle between them; the first hit of a
     // union is the nearest first hit. On ties the disk wins (its normal is the true one).
-    std::optional<HitC> best = ray_disk(c[0], c.radius, ray);
-    const std::optional<HitC> hb = ray_disk(c[1], c.radius, ray);
+    std::optional<UnitRayHit> best = ray_disk(c[0], c.radius, ray);
+    const std::optional<UnitRayHit> hb = ray_disk(c[1], c.radius, ray);
     if (closer(hb, best)) best = hb;
     const Vec2c w = c[1] - c[0];
     if (w != Vec2c::Zero()) {
@@ -180,7 +180,7 @@ inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
           default: nn = -t; p = c[0]; break;
         }
       };
-      const std::optional<HitC> hr = ray_half_planes(4, plane, ray);
+      const std::optional<UnitRayHit> hr = ray_half_planes(4, plane, ray);
       if (hr && (!best || hr->s < best->s)) best = hr;
     }
     return best;
@@ -200,21 +200,21 @@ inline std::optional<HitC> ray_core(const Core& c, const RayC& ray) {
 /// corner (two sides at an angle below their rounding) bound a region reaching far past that
 /// corner, and the box is what cuts it off.
 template <PrimitiveShape P>
-std::optional<HitC> ray_primitive(const P& shape, const RayC& ray) {
+std::optional<UnitRayHit> ray_primitive(const P& shape, const UnitRay& ray) {
   const Aabb<scalar_of_t<P>> box = bounds(shape);
   const std::optional<Span> span = ray_box_span(widen(box.min()), widen(box.max()), ray);
   if (!span) return std::nullopt;
   const Calc entry = span->enter;  // >= 0
-  RayC local = ray;
+  UnitRay local = ray;
   local.o = ray.o + ray.u * entry;
   local.s_max = span->exit - entry;
   const Core core = core_of(shape);
   Core origin;
   origin.push(local.o);
-  std::optional<HitC> h;
+  std::optional<UnitRayHit> h;
   if (const int k = tiny_scale(core, origin); k != 0) {
     // Tiny shape and origin: rescale exactly so that squares do not underflow.
-    RayC scaled_ray = local;
+    UnitRay scaled_ray = local;
     scaled_ray.o = Vec2c(std::ldexp(local.o.x(), k), std::ldexp(local.o.y(), k));
     scaled_ray.s_max = std::ldexp(local.s_max, k);
     h = ray_core(scaled(core, k), scaled_ray);
@@ -228,13 +228,13 @@ std::optional<HitC> ray_primitive(const P& shape, const RayC& ray) {
 }
 
 template <ConcreteShape S>
-std::optional<HitC> ray_concrete(const S& shape, const RayC& ray) {
+std::optional<UnitRayHit> ray_concrete(const S& shape, const UnitRay& ray) {
   if constexpr (is_compound_v<S>) {
     const Aabb<scalar_of_t<S>>& box = shape.bounds();
     if (!ray_box_span(widen(box.min()), widen(box.max()), ray)) return std::nullopt;
-    std::optional<HitC> best;
+    std::optional<UnitRayHit> best;
     for (const auto& child : shape.children()) {
-      const std::optional<HitC> h = std::visit([&](const auto& x) { return ray_primitive(x, ray); }, child);
+      const std::optional<UnitRayHit> h = std::visit([&](const auto& x) { return ray_primitive(x, ray); }, child);
       if (closer(h, best)) best = h;
     }
     return best;
@@ -279,10 +279,10 @@ std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_o
   const Vec2c u = ds / len_s;
   if (contains(shape, ray.origin)) return RayHit<T>{T(0), ray.origin, Vec2<T>((-u).template cast<T>())};
 
-  detail::RayC r{o, u, std::ldexp(tmax * len_s, e), 0};
+  detail::UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
   const Calc m = std::max(detail::scale_of(bounds(shape)), o.cwiseAbs().maxCoeff());
   r.pad = 4 * 0x1p-53 * m + 16 * 0x1p-1074;  // no 2^-500 floor: tiny shapes are rescaled
-  const std::optional<detail::HitC> h =
+  const std::optional<detail::UnitRayHit> h =
       detail::visit_shape(shape, [&](const auto& x) { return detail::ray_concrete(x, r); });
   if (!h) return std::nullopt;
   // t = s / |d| = s / len_s * 2^-e, ordered so that neither step overflows (len_s is in [0.5, 1.5)).

@@ -186,7 +186,7 @@ class Obb {
     const Vec2<T> u = (a / len).template cast<T>();
     return Obb(detail::Unchecked{}, center, half_extents, u);
   }
-  /// The lecture's form: four corners in order around the rectangle (either winding).
+  /// The course notes' form: four corners in order around the rectangle (either winding).
   /// They must form a rectangle up to rounding: |p0 + p2 - p1 - p3| <= 16 eps_T S and
   /// |(p1 - p0) . (p3 - p0)| <= 16 eps_T S (|p1 - p0| + |p3 - p0|), S = largest |coordinate|.
   /// Errors: NonFinite, OutOfRange (index = 2 * corner + axis), NotARectangle.

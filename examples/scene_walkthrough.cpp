@@ -1,5 +1,5 @@
-/// @file lecture_flow.cpp
-/// The lecture's flow on a small scene: build shapes (one rejected with a named error), the broad
+/// @file scene_walkthrough.cpp
+/// The course notes' flow on a small scene: build shapes (one rejected with a named error), the broad
 /// check (bounding boxes), the exact overlap test, the contact, resolving the penetration and
 /// testing again. Exits non-zero if any step contradicts what it should show.
 
@@ -116,6 +116,6 @@ int main() {
   const V none = resolve(player, scene[2].shape);
   expect(none.x() == 0 && none.y() == 0, "no push for the coin");
 
-  std::printf("\n%s\n", failures == 0 ? "lecture flow: all steps as expected" : "lecture flow: FAILED");
+  std::printf("\n%s\n", failures == 0 ? "scene walkthrough: all steps as expected" : "scene walkthrough: FAILED");
   return failures == 0 ? 0 : 1;
 }

@@ -1,0 +1,241 @@
+#pragma once
+/// @file detail/contact_cores.hpp
+/// Contact generation for two convex cores (a point, a segment or a convex polygon, each dilated
+/// by a radius: see detail/core.hpp) that are known to overlap, in named steps:
+///   1. contact_of_separate_cores: cores apart (only the radii meet): the closest points give the
+///      normal, one point midway.
+///   2. find_reference_face: otherwise the face of least penetration over both cores' faces.
+///   3. find_incident_face: the other core's face most anti-parallel to it (or its point).
+///   4. clip_to_reference_face: the incident face clipped to the reference face's side planes.
+///   5. keep_points_within_reach: the clipped ends deep enough, each moved midway between surfaces.
+///   6. find_witness_point: when clipping found nothing, the candidate nearest to both shapes.
+/// Everything is computed in Calc (double); Contact<T> in queries.hpp is the result rounded to T.
+
+#include "collide/config.hpp"
+#include "collide/detail/core.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace collide::detail {
+
+/// A contact of two dilated cores in the computation's precision.
+struct CoreContact {
+  Vec2c normal = Vec2c(1, 0);  ///< unit, from the first core toward the second
+  Calc depth = 0;              ///< penetration along normal, >= 0
+  int count = 0;               ///< valid entries in points: 1 or 2
+  std::array<Vec2c, 2> points{Vec2c::Zero(), Vec2c::Zero()};
+};
+
+/// Step 1: cores apart, radii overlapping. Contact along the closest points, or nullopt when the
+/// gap is at the level of rounding (a point that misses a segment through it only because the
+/// segment's ends were rounded): such a gap has no reliable direction, the faces decide instead.
+inline std::optional<CoreContact> contact_of_separate_cores(const Core& p, const Core& q) {
+  const Closest cl = closest_points(p, q);
+  const Calc d = norm_of(cl.on_q - cl.on_p);
+  Calc scale = 0;
+  for (const Vec2c& x : p.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
+  for (const Vec2c& x : q.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
+  if (!(d > kOverlapErrorFactor * kUnitRoundoff * scale)) return std::nullopt;
+  CoreContact out;
+  out.normal = unit_of(cl.on_q - cl.on_p);
+  out.depth = std::max(Calc(0), p.radius + q.radius - d);
+  const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
+  out.points[0] = (sp + sq) * 0.5;
+  out.count = 1;
+  return out;
+}
+
+/// The face of least penetration: which core owns it, its ends and its outward normal.
+struct ReferenceFace {
+  const Core* ref;  ///< the core that owns the face
+  const Core* inc;  ///< the other core
+  Vec2c r1, r2;     ///< the face's ends, counter-clockwise on ref
+  Vec2c normal;     ///< outward normal of the face, toward inc
+};
+
+/// Step 2: the reference face of the least-penetration axis (owner >= 0).
+inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axis& ax) {
+  ReferenceFace f{ax.owner == 0 ? &p : &q, ax.owner == 0 ? &q : &p, {}, {}, {}};
+  f.normal = ax.owner == 0 ? ax.normal : Vec2c(-ax.normal);
+  const Core& ref = *f.ref;
+  if (ref.size() == 2) {
+    f.r1 = ax.face == 0 ? ref[0] : ref[1];
+    f.r2 = ax.face == 0 ? ref[1] : ref[0];
+  } else {
+    f.r1 = ref[ax.face];
+    f.r2 = ref[(ax.face + 1) % ref.size()];
+  }
+  return f;
+}
+
+/// The incident face (one or two points) as it is clipped.
+struct IncidentFace {
+  std::array<Vec2c, 2> ends{};
+  int count = 0;
+};
+
+/// Step 3: the incident core's face most anti-parallel to the reference normal. Among faces as
+/// anti-parallel as the best up to rounding (a polygon side split by a vertex one ulp off the
+/// line), the one that spans most of the reference face: the other may lie beside it entirely,
+/// and clipping would then find nothing.
+inline IncidentFace find_incident_face(const ReferenceFace& f) {
+  const Core& inc = *f.inc;
+  IncidentFace out;
+  if (inc.size() == 1) {
+    out.ends[0] = inc[0];
+    out.count = 1;
+    return out;
+  }
+  if (inc.size() == 2) {
+    out.ends = {inc[0], inc[1]};
+    out.count = 2;
+    return out;
+  }
+  auto anti_parallel = [&](std::size_t j) {
+    const Vec2c e = inc[(j + 1) % inc.size()] - inc[j];
+    return Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+  };
+  std::size_t best = 0;
+  Calc best_dot = std::numeric_limits<Calc>::infinity();
+  for (std::size_t j = 0; j < inc.size(); ++j) {
+    const Calc dot = anti_parallel(j);
+    if (dot < best_dot) {
+      best_dot = dot;
+      best = j;
+    }
+  }
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc len2 = tangent.squaredNorm();
+  Calc best_span = -std::numeric_limits<Calc>::infinity();
+  for (std::size_t j = 0; j < inc.size(); ++j) {
+    if (anti_parallel(j) > best_dot + kFaceTieTolerance) continue;
+    const Vec2c a0 = inc[j], a1 = inc[(j + 1) % inc.size()];
+    const Calc t0 = (a0 - f.r1).dot(tangent), t1 = (a1 - f.r1).dot(tangent);
+    const Calc span = std::min(std::max(t0, t1), len2) - std::max(std::min(t0, t1), Calc(0));
+    if (span > best_span) {
+      best_span = span;
+      best = j;
+    }
+  }
+  out.ends = {inc[best], inc[(best + 1) % inc.size()]};
+  out.count = 2;
+  return out;
+}
+
+/// Step 4: clips a two-point incident face to 0 <= (x - r1) . tangent <= |tangent|^2. Returns
+/// false when the face misses the reference face, or when clipping cannot be trusted: an incident
+/// face 2^20 times longer than the reference face moves its ends by ulps of the long face, more
+/// than the short face is long.
+inline bool clip_to_reference_face(IncidentFace& face, const ReferenceFace& f) {
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc len2 = tangent.squaredNorm();
+  std::array<Vec2c, 2>& ip = face.ends;
+  const Calc inc_len2 = face.count == 2 ? (ip[1] - ip[0]).squaredNorm() : 0;
+  if (inc_len2 > kClipLengthRatio * len2) return false;
+  if (face.count != 2 || !(len2 > 0)) return true;
+  for (int side = 0; side < 2; ++side) {
+    const Calc lim = side == 0 ? 0 : len2;
+    const Calc sgn = side == 0 ? 1 : -1;
+    const Calc d0 = sgn * ((ip[0] - f.r1).dot(tangent) - lim), d1 = sgn * ((ip[1] - f.r1).dot(tangent) - lim);
+    if (d0 < 0 && d1 < 0) return false;
+    if (d0 < 0) ip[0] = ip[0] + (ip[1] - ip[0]) * (d0 / (d0 - d1));
+    if (d1 < 0) ip[1] = ip[1] + (ip[0] - ip[1]) * (d1 / (d1 - d0));
+  }
+  return true;
+}
+
+/// Step 5: the clipped ends within reach of the radii, each moved midway between the surfaces.
+inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out) {
+  const Calc ref_radius = f.ref->radius, inc_radius = f.inc->radius;
+  const Calc reach = ref_radius + inc_radius;
+  for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
+    const Calc s = (face.ends[i] - f.r1).dot(f.normal);
+    if (s <= reach) out.points[std::size_t(out.count++)] = face.ends[i] + f.normal * ((ref_radius - s - inc_radius) * 0.5);
+  }
+  if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
+}
+
+/// How far x lies outside the dilated core c (0 inside).
+inline Calc excess_over(const Vec2c& x, const Core& c) {
+  Core pt;
+  pt.push(x);
+  if (cores_intersect(pt, c)) return Calc(0);
+  const Closest cl = closest_points(pt, c);
+  return std::max(Calc(0), norm_of(cl.on_q - cl.on_p) - c.radius);
+}
+
+/// Step 6: when clipping found nothing (the incident face misses a short reference face) or was
+/// not trusted, the candidate nearest to both dilated cores: the incident core's deepest vertex
+/// moved halfway to the reference surface, the reference face's midpoint moved halfway to the
+/// incident surface, or a vertex of either core (often inside the other, when the shapes differ
+/// in size by orders of magnitude).
+inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFace& f, Calc depth) {
+  const Core& inc = *f.inc;
+  Calc best = std::numeric_limits<Calc>::infinity();
+  Vec2c witness = p[0];
+  auto consider_witness = [&](const Vec2c& x) {
+    const Calc e = std::max(excess_over(x, p), excess_over(x, q));
+    if (e < best) {
+      best = e;
+      witness = x;
+    }
+  };
+  std::size_t k = 0;
+  for (std::size_t j = 1; j < inc.size(); ++j) {
+    if ((inc[j] - f.r1).dot(f.normal) < (inc[k] - f.r1).dot(f.normal)) k = j;
+  }
+  const Calc s = (inc[k] - f.r1).dot(f.normal);
+  consider_witness(inc[k] + f.normal * ((f.ref->radius - s - inc.radius) * 0.5));
+  consider_witness((f.r1 + f.r2) * 0.5 + f.normal * (f.ref->radius - depth * 0.5));
+  for (const Vec2c& x : p.pts()) consider_witness(x);
+  for (const Vec2c& x : q.pts()) consider_witness(x);
+  return witness;
+}
+
+/// Contact of two dilated cores known to overlap, at their own scale (see contact_cores()).
+inline CoreContact contact_cores_at_scale(const Core& p, const Core& q) {
+  if (!cores_intersect(p, q)) {
+    if (const std::optional<CoreContact> c = contact_of_separate_cores(p, q)) return *c;
+  }
+  const Axis ax = least_penetration(p, q);
+  CoreContact out;
+  out.normal = ax.normal;
+  out.depth = std::max(Calc(0), ax.depth);
+  if (ax.owner < 0) {
+    out.points[0] = (p[0] + q[0]) * 0.5;
+    out.count = 1;
+    return out;
+  }
+  const ReferenceFace f = find_reference_face(p, q, ax);
+  IncidentFace face = find_incident_face(f);
+  if (clip_to_reference_face(face, f)) keep_points_within_reach(face, f, out);
+  if (out.count == 0) {
+    out.points[0] = find_witness_point(p, q, f, out.depth);
+    out.count = 1;
+  }
+  return out;
+}
+
+/// contact_cores_at_scale() after exact rescaling of tiny cores (see tiny_scale()).
+inline CoreContact contact_cores(const Core& p, const Core& q) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return contact_cores_at_scale(p, q);
+  CoreContact c = contact_cores_at_scale(scaled(p, k), scaled(q, k));
+  c.depth = std::ldexp(c.depth, -k);
+  for (Vec2c& pt : c.points) pt = Vec2c(std::ldexp(pt.x(), -k), std::ldexp(pt.y(), -k));
+  return c;
+}
+
+/// Distance between two dilated cores that do not overlap (rescaled when tiny).
+inline Calc core_gap(const Core& p, const Core& q) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return std::sqrt(closest_points(p, q).dist2) - p.radius - q.radius;
+  const Core ps = scaled(p, k), qs = scaled(q, k);
+  return std::ldexp(std::sqrt(closest_points(ps, qs).dist2) - ps.radius - qs.radius, -k);
+}
+
+}  // namespace collide::detail

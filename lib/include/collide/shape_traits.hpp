@@ -1,0 +1,88 @@
+#pragma once
+/// @file shape_traits.hpp
+/// Compile-time facts about shape types: the scalar of any shape, the concepts every query is
+/// constrained by (a primitive, a concrete shape, a variant, any of them), and the two ways of
+/// walking a shape (the concrete shape inside a variant; the primitives of a compound).
+
+#include "collide/compound.hpp"
+#include "collide/registry.hpp"
+#include "collide/shapes.hpp"
+
+#include <type_traits>
+#include <variant>
+
+namespace collide {
+
+/// Shape type -> its scalar (float or double), as `type`; for the six shapes and their variants.
+template <class S>
+struct ScalarOf;
+/// @cond COLLIDE_SPECIALISATIONS
+template <Scalar T> struct ScalarOf<Circle<T>> { using type = T; };
+template <Scalar T> struct ScalarOf<Aabb<T>> { using type = T; };
+template <Scalar T> struct ScalarOf<Obb<T>> { using type = T; };
+template <Scalar T> struct ScalarOf<Capsule<T>> { using type = T; };
+template <Scalar T> struct ScalarOf<ConvexPolygon<T>> { using type = T; };
+template <Scalar T> struct ScalarOf<Compound<T>> { using type = T; };
+template <Scalar T, class... Rest>
+struct ScalarOf<std::variant<Circle<T>, Rest...>> {
+  using type = T;
+};
+/// @endcond
+
+/// The scalar (float or double) of any shape type.
+template <class S>
+using scalar_of_t = typename ScalarOf<std::remove_cvref_t<S>>::type;
+
+template <class S>
+concept PrimitiveShape = requires { typename ScalarOf<S>::type; } &&
+    (std::is_same_v<S, Circle<scalar_of_t<S>>> || std::is_same_v<S, Aabb<scalar_of_t<S>>> ||
+     std::is_same_v<S, Obb<scalar_of_t<S>>> || std::is_same_v<S, Capsule<scalar_of_t<S>>> ||
+     std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>);
+
+template <class S>
+concept ConcreteShape = PrimitiveShape<S> || (requires { typename ScalarOf<S>::type; } &&
+                                              std::is_same_v<S, Compound<scalar_of_t<S>>>);
+
+template <class S>
+concept VariantShape = requires { typename ScalarOf<S>::type; } &&
+    (std::is_same_v<S, Shape<scalar_of_t<S>>> || std::is_same_v<S, Primitive<scalar_of_t<S>>>);
+
+/// Any of the six shapes, Primitive<T> or Shape<T>.
+template <class S>
+concept AnyShape = ConcreteShape<std::remove_cvref_t<S>> || VariantShape<std::remove_cvref_t<S>>;
+
+namespace detail {
+
+/// Calls f with the concrete shape held by s.
+template <class S, class F>
+decltype(auto) visit_shape(const S& s, F&& f) {
+  if constexpr (VariantShape<S>) {
+    return std::visit(f, s);
+  } else {
+    return f(s);
+  }
+}
+
+/// Calls f with each primitive of s (s itself, or each child of a compound).
+template <class S, class F>
+void for_each_primitive(const S& s, F&& f) {
+  if constexpr (std::is_same_v<S, Compound<scalar_of_t<S>>>) {
+    for (const auto& child : s.children()) std::visit(f, child);
+  } else {
+    f(s);
+  }
+}
+
+template <class S>
+inline constexpr bool is_compound_v = std::is_same_v<S, Compound<scalar_of_t<S>>>;
+
+}  // namespace detail
+
+/// Conservative bounding box of any shape (see compound.hpp for the per-shape overloads).
+template <class S>
+  requires VariantShape<S>
+Aabb<scalar_of_t<S>> bounds(const S& s) {
+  return std::visit([](const auto& x) { return bounds(x); }, s);
+}
+
+}  // namespace collide
