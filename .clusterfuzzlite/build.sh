@@ -14,7 +14,10 @@ fi
 BUILD="${WORK:-/tmp}/collide-fuzz-build"
 JOBS="${COLLIDE_JOBS:-$(nproc)}"
 
-# Static GMP/MPFR (the runner image has neither); no benchmarks; the engine only at link time.
+# Static GMP/MPFR (the runner image has neither; the oracle needs their C libraries only, no gmpxx,
+# so the -stdlib=libc++ of $CXXFLAGS links); no benchmarks; the engine only at link time. Configure
+# stops with a clear message when the image lacks the CGAL, Boost or Eigen versions the code needs
+# (oracles/exact/CMakeLists.txt; the Dockerfile provides them).
 cmake -S "$ROOT" -B "$BUILD" -G Ninja \
   -DCMAKE_BUILD_TYPE= \
   -DCMAKE_CXX_COMPILER="$CXX" \
