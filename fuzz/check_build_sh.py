@@ -80,7 +80,7 @@ def main():
     ap.add_argument("--runs", type=int, default=300, help="fuzzing iterations per target after the replay")
     args = ap.parse_args()
 
-    work = pathlib.Path(args.work)
+    work = pathlib.Path(args.work).resolve()  # build.sh changes directory
     out = work / "out"
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)

@@ -341,7 +341,7 @@ def to_regression(binary, target, artifact, work, places):
     return entry
 
 
-def write_reports(results, args, build, places, plan):
+def write_reports(results, build, places, plan):
     reports = places.reports
     reports.mkdir(parents=True, exist_ok=True)
     unfinished = [t for t in plan["targets"] if t not in plan["done"]]
@@ -494,7 +494,7 @@ def main():
 
     results = [plan["done"].get(t) or plan["partial"][t] for t in targets
                if t in plan["done"] or t in plan["partial"]]
-    reports = write_reports(results, args, build, places, plan)
+    reports = write_reports(results, build, places, plan)
     log(f"reports: {reports / 'fuzz.md'}, {reports / 'fuzz.json'}")
     if stop.signal is not None:
         log(f"interrupted: resume with `./harness fuzz --resume` (plan in {shown(places.state)})")
