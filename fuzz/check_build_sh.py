@@ -72,6 +72,12 @@ def libcxx_problems(binary):
     return problems
 
 
+def shared_gmp(binary):
+    """The shared GMP/MPFR libraries binary loads (build.sh links them statically)."""
+    ldd = subprocess.run(["ldd", str(binary)], capture_output=True, text=True).stdout
+    return [ln.split()[0] for ln in ldd.splitlines() if "libgmp" in ln or "libmpfr" in ln]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--clang", default="clang++")
@@ -123,6 +129,9 @@ def main():
             continue
         if "[libfuzzer]" not in options.read_text():
             print(f"FAIL: {options.name} has no [libfuzzer] section")
+            failures += 1
+        if shared_gmp(binary):
+            print(f"FAIL: {t}: loads {shared_gmp(binary)}; build.sh links GMP and MPFR statically")
             failures += 1
         if args.stdlib == "libc++":
             for problem in libcxx_problems(binary):
