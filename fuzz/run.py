@@ -351,7 +351,8 @@ def write_reports(results, build, places, plan):
     (reports / "fuzz.json").write_text(json.dumps(doc, indent=2) + "\n")
     lines = ["# Fuzzing report", "",
              f"Build: `{shown(build)}` "
-             f"({'ASan + UBSan' if plan['sanitizers'] else 'no sanitizers'}), fork workers per target: {plan['jobs']}.",
+             f"({'executables as given' if plan['fuzzer_dir'] else 'ASan + UBSan' if plan['sanitizers'] else 'no sanitizers'})"
+             f", fork workers per target: {plan['jobs']}.",
              "", "| target | time (s) | executions | exec/s | coverage (edges / features) | corpus | new inputs | failures |",
              "|---|---:|---:|---:|---|---:|---:|---:|"]
     if unfinished:
