@@ -6,7 +6,7 @@ For every .github/workflows/*.yml (PyYAML, Debian's python3-yaml):
   runs a command or uses an action, remote actions pinned to a ref;
 - every repository path it names exists: words of `run:` commands that are paths in the tree
   (`./harness`, `.ci/run`, `fuzz/...`; `build/...` is output the harness makes), `with: path:`,
-  local actions, and the literal part of `paths:` filters;
+  local actions, and the literal part of `paths:` filters; a file run as a command is executable;
 - every CMake preset it names (`cmake --preset P`, COLLIDE_PRESET, a matrix of presets) is a
   configure preset of CMakePresets.json; cron schedules have five fields;
 - ClusterFuzzLite: its actions need .clusterfuzzlite/{Dockerfile, build.sh, project.yaml}; the
@@ -19,6 +19,7 @@ presets. Last, .clusterfuzzlite/Dockerfile's pinned versions meet the minimums c
 (oracles/exact/CMakeLists.txt) and its header states those same minimums.
 """
 import json
+import os
 import pathlib
 import re
 import shlex
@@ -142,6 +143,11 @@ def check_workflow(problems, path, known_presets, project_language, seen):
                 command = str(step["run"])
                 for word in repo_words(command):
                     check_path(problems, sw, word)
+                for line in command.splitlines():  # a file run as a command must be executable
+                    first = (line.split() or [""])[0]
+                    program = ROOT / (first[2:] if first.startswith("./") else first)
+                    if "/" in first and program.is_file() and not os.access(program, os.X_OK):
+                        problems.add(sw, f"runs {first}, which is not executable")
                 for p in re.findall(r"--preset[ =](\S+)", command):
                     if p not in known_presets:
                         problems.add(sw, f"cmake --preset {p}: no such configure preset")
@@ -259,6 +265,7 @@ jobs:
 PLANTED = {
     "a missing file": SOUND.replace(".ci/run", ".ci/walk"),
     "an unknown preset": SOUND.replace("run: .ci/run", "run: cmake --preset nosuch"),
+    "a command that is not executable": SOUND.replace(".ci/run", "fuzz/run.py"),
     "an unpinned action": SOUND.replace("actions/checkout@v4", "actions/checkout"),
     "a four-field cron": SOUND.replace("'0 1 * * *'", "'0 1 * *'"),
     "a step with neither run nor uses": SOUND.replace("      - run: .ci/run", "      - name: nothing"),
