@@ -430,6 +430,9 @@ def main():
         log(f"resuming: {', '.join(t for t in plan['targets'] if t not in plan['done'])} left of "
             f"{', '.join(plan['targets'])}")
     else:
+        if places.state.exists():
+            log(f"note: the plan of an interrupted run ({shown(places.state)}) is replaced by this run's "
+                "(--resume would have continued it)")
         total = (args.hours * 3600 if args.hours else (args.minutes if args.minutes is not None else 10) * 60)
         plan = {"targets": args.target or [], "total_seconds": total, "jobs": args.jobs,
                 "sanitizers": not args.no_sanitizers, "merge": not args.no_merge,
