@@ -14,12 +14,25 @@ fi
 BUILD="${WORK:-/tmp}/collide-fuzz-build"
 JOBS="${COLLIDE_JOBS:-$(nproc)}"
 
-# Static GMP/MPFR (the runner image has neither); no benchmarks; the engine only at link time.
+# Static GMP/MPFR, named by path (CGAL's find modules would pick the shared ones; the runner image
+# need not have them). The oracle needs their C libraries only, no gmpxx, so the -stdlib=libc++ of
+# $CXXFLAGS links. No benchmarks; the engine only at link time. Configure stops with a clear
+# message when the image lacks the CGAL, Boost or Eigen versions the code needs
+# (oracles/exact/CMakeLists.txt; the Dockerfile provides them).
+static_lib() {
+  local path
+  path="$("${CC:-cc}" -print-file-name="$1")"
+  [[ "$path" == /* && -f "$path" ]] || { echo "build.sh: $1 not found (install libgmp-dev, libmpfr-dev)" >&2; exit 1; }
+  printf '%s' "$path"
+}
+GMP_A="$(static_lib libgmp.a)"
+MPFR_A="$(static_lib libmpfr.a)"
 cmake -S "$ROOT" -B "$BUILD" -G Ninja \
   -DCMAKE_BUILD_TYPE= \
   -DCMAKE_CXX_COMPILER="$CXX" \
   -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
-  -DCMAKE_FIND_LIBRARY_SUFFIXES=.a \
+  -DGMP_LIBRARY_RELEASE="$GMP_A" -DGMP_LIBRARY_DEBUG="$GMP_A" \
+  -DMPFR_LIBRARIES="$MPFR_A" \
   -DCOLLIDE_BUILD_BENCH=OFF \
   -DCOLLIDE_FUZZ_ENGINE="$LIB_FUZZING_ENGINE"
 

@@ -2,14 +2,20 @@
 """Long fuzzing runs of collide's libFuzzer targets (the backend of `./harness fuzz`).
 
   fuzz/run.py [--build-dir D] [--target T ...] [--minutes M | --hours H] [--jobs J]
-              [--no-sanitizers] [--no-merge]
+              [--no-sanitizers] [--no-merge] [--resume]
 
 - Configures and builds the `fuzz` preset (clang, ASan + UBSan, -fsanitize=fuzzer) if needed.
   D is used when it is such a build; otherwise (e.g. the g++ build the harness passes) the fuzz
   build goes to build/fuzz beside it. --no-sanitizers builds build/fuzz-nosan instead (speed).
 - Runs the targets one after another, sharing the time budget (M minutes in total), each in
   libFuzzer's fork mode with J workers, so a failure is recorded and the run goes on. Prints a
-  progress line each minute: elapsed, executions, exec/s, corpus size, coverage, failures.
+  progress line each minute of the whole run: elapsed and total time, the current target and its
+  executions, exec/s, corpus size, coverage, failures.
+- SIGINT (Ctrl-C) or SIGTERM stops the current target's fuzzer and goes on to what a finished run
+  does with what it has: merge, promote the failures, write the reports, exit with the usual
+  status. The plan (targets, time each, what finished) is kept in build/fuzz-runs/state.json:
+  --resume runs what is left of it (the interrupted target for its remaining time, from its
+  inputs so far, then the targets not started) and reports the whole run.
 - At the end merges the new inputs that add coverage into fuzz/corpus/<target>/ (-merge=1),
   groups the failing inputs by what failed (law, scalar and wording of the account, or the
   sanitizer's summary), minimises the smallest input of each group, and turns it into a
@@ -18,7 +24,8 @@
   (.txt).
 - Writes build/reports/fuzz.md and build/reports/fuzz.json.
 
-Exit status: 0 when no target failed, 1 when failures were found, 2 on a build or usage error.
+Exit status: 0 when no target failed, 1 when failures were found (an interrupted run too: its
+report says it was interrupted), 2 on a build or usage error.
 """
 import argparse
 import json
@@ -26,6 +33,7 @@ import os
 import pathlib
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -37,6 +45,8 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s:? (\d+)")
 CASE_RE = re.compile(r"case file: (\S+)")
 RAW_RE = re.compile(r"regression input: (\S+)")
+# How long a stopped fuzzer may take to exit before it is killed.
+STOP_GRACE_S = 30
 
 
 def log(msg):
@@ -104,23 +114,116 @@ def fmt_count(n):
     return str(n)
 
 
-def run_target(binary, target, seconds, jobs, work):
-    """One fork-mode run; returns its statistics."""
-    seeds = ROOT / "fuzz/corpus" / target
+def shown(path):
+    """A path as reports show it: relative to the tree when inside it."""
+    path = pathlib.Path(path)
+    return str(path.relative_to(ROOT)) if path.is_relative_to(ROOT) else str(path)
+
+
+def shielded(cmd, **kw):
+    """subprocess.run in a session of its own: a Ctrl-C at the terminal reaches this script only,
+    which stops the fuzzer and lets the merge and the minimisation that follow finish."""
+    return subprocess.run(cmd, start_new_session=True, **kw)
+
+
+class Places:
+    """Where a run reads and writes: the tree's corpus, regressions, scratch and reports unless
+    told otherwise (the interruption test runs against a scratch copy)."""
+
+    def __init__(self, args):
+        def pick(value, default):
+            return pathlib.Path(value).resolve() if value else ROOT / default
+        self.corpus = pick(args.corpus_dir, "fuzz/corpus")
+        self.regressions = pick(args.regressions_dir, "tests/regressions")
+        self.runs = pick(args.runs_dir, "build/fuzz-runs")
+        self.reports = pick(args.reports_dir, "build/reports")
+        self.state = self.runs / "state.json"
+
+
+class Stop:
+    """SIGINT and SIGTERM: stop the running fuzzer (its whole process group: fork mode's workers
+    too), then let the run merge, promote and report what it has."""
+
+    def __init__(self):
+        self.signal = None
+        self.proc = None
+
+    def install(self):
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, self.handle)
+
+    def handle(self, signum, _frame):
+        if self.signal is not None:
+            log(f"{signal.Signals(signum).name}: already stopping; merging and reporting what was found")
+            return
+        self.signal = signum
+        log(f"{signal.Signals(signum).name}: stopping the fuzzer; merging and reporting what was found "
+            f"(continue later with --resume)")
+        self.stop_fuzzer(signal.SIGINT)
+
+    def stop_fuzzer(self, sig):
+        proc = self.proc
+        if proc is not None and proc.poll() is None:
+            try:
+                os.killpg(proc.pid, sig)
+            except ProcessLookupError:
+                pass
+
+
+class Ticker:
+    """One progress line per interval of the whole run (not per target)."""
+
+    def __init__(self, total_seconds, done_before, interval):
+        self.start = time.time()
+        self.total = total_seconds
+        self.done_before = done_before  # seconds spent by the part of the run being resumed
+        self.interval = interval
+        self.next = self.start + interval
+        self.failures_before = 0       # failing inputs of the targets already run in this process
+
+    def tick(self, label, stats, crashes):
+        now = time.time()
+        if now < self.next:
+            return
+        while self.next <= now:
+            self.next += self.interval
+        with stats.lock:
+            log(f"[{clock(self.done_before + now - self.start)} of {clock(self.total)}] {label}: "
+                f"execs {fmt_count(stats.execs)}, {fmt_count(stats.eps)} exec/s, corpus {stats.corp}, "
+                f"cov {stats.cov} (ft {stats.ft}), failing inputs {self.failures_before + len(failures_in(crashes))}")
+
+
+def clock(seconds):
+    s = int(seconds)
+    return f"{s // 3600}:{s % 3600 // 60:02d}:{s % 60:02d}"
+
+
+def run_target(binary, target, seconds, jobs, work, places, stop, ticker, label, keep_inputs):
+    """One fork-mode run; returns its statistics. keep_inputs: go on from the inputs an
+    interrupted run of this target left in work/new."""
+    seeds = places.corpus / target
     new = work / "new"
     crashes = work / "crashes"
-    shutil.rmtree(work, ignore_errors=True)
-    new.mkdir(parents=True)
-    crashes.mkdir()
+    tmp = work / "tmp"
+    if not keep_inputs:
+        shutil.rmtree(work, ignore_errors=True)
+    # Failing inputs of an earlier part were promoted when it stopped.
+    shutil.rmtree(crashes, ignore_errors=True)
+    shutil.rmtree(tmp, ignore_errors=True)
+    for d in (seeds, new, crashes, tmp):
+        d.mkdir(parents=True, exist_ok=True)
     logfile = work / "libfuzzer.log"
     cmd = [str(binary), f"-fork={max(1, jobs)}", "-ignore_crashes=1", "-ignore_timeouts=1", "-ignore_ooms=1",
            f"-max_total_time={seconds}", f"-artifact_prefix={crashes}/", "-max_len=4096", "-timeout=20",
            "-rss_limit_mb=2560", "-print_final_stats=1", str(new), str(seeds)]
     stats = Stats()
     start = time.time()
-    with open(logfile, "w") as lf:
+    # Fork mode's scratch directories go under work/, not /tmp, when a stop leaves them behind.
+    env = dict(os.environ, TMPDIR=str(tmp))
+    with open(logfile, "a" if keep_inputs else "w") as lf:
         proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace",
-                                cwd=work)
+                                cwd=work, env=env, start_new_session=True)
+        stop.proc = proc
 
         def pump():
             for line in proc.stdout:
@@ -129,16 +232,15 @@ def run_target(binary, target, seconds, jobs, work):
 
         reader = threading.Thread(target=pump, daemon=True)
         reader.start()
-        next_report = start + 60
+        stopped_at = None
         while proc.poll() is None:
-            time.sleep(1)
-            now = time.time()
-            if now >= next_report:
-                next_report += 60
-                with stats.lock:
-                    log(f"  [{target} {int(now - start) // 60}:{int(now - start) % 60:02d}] "
-                        f"execs {fmt_count(stats.execs)}, {fmt_count(stats.eps)} exec/s, corpus {stats.corp}, "
-                        f"cov {stats.cov} (ft {stats.ft}), failures {len(failures_in(crashes))}")
+            time.sleep(0.2)
+            ticker.tick(label, stats, crashes)
+            if stop.signal is not None:
+                stopped_at = stopped_at or time.time()
+                if time.time() - stopped_at > STOP_GRACE_S:
+                    stop.stop_fuzzer(signal.SIGKILL)
+        stop.proc = None
         reader.join(timeout=10)
     elapsed = time.time() - start
     return {
@@ -150,15 +252,16 @@ def run_target(binary, target, seconds, jobs, work):
         "features": stats.ft,
         "corpus": stats.corp,
         "exit_code": proc.returncode,
-        "log": str(logfile.relative_to(ROOT)) if logfile.is_relative_to(ROOT) else str(logfile),
+        "interrupted": stop.signal is not None,
+        "log": shown(logfile),
         "artifacts": [str(p) for p in failures_in(crashes)],
     }
 
 
-def merge(binary, target, work):
-    seeds = ROOT / "fuzz/corpus" / target
+def merge(binary, target, work, places):
+    seeds = places.corpus / target
     before = {p.name for p in seeds.iterdir()}
-    r = subprocess.run([str(binary), "-merge=1", "-max_len=4096", "-timeout=20", "-rss_limit_mb=2560", str(seeds),
+    r = shielded([str(binary), "-merge=1", "-max_len=4096", "-timeout=20", "-rss_limit_mb=2560", str(seeds),
                         str(work / "new")], cwd=work, capture_output=True, text=True, errors="replace")
     after = {p.name for p in seeds.iterdir()}
     if r.returncode != 0:
@@ -170,7 +273,7 @@ def signature(binary, artifact, work):
     """What a failure is, for grouping: the law, the scalar and the words of its account, or the
     sanitizer's summary line. One night can write thousands of artifacts of one bug; each bug is
     minimised and promoted once."""
-    r = subprocess.run([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(artifact)], cwd=work,
+    r = shielded([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(artifact)], cwd=work,
                        capture_output=True, text=True, errors="replace")
     lines = r.stderr.splitlines()
     head = next((ln for ln in lines if ln.startswith("== collide fuzz target")), None)
@@ -194,13 +297,13 @@ def distinct_failures(binary, artifacts, work):
             for sig, arts in groups.items()]
 
 
-def to_regression(binary, target, artifact, work):
+def to_regression(binary, target, artifact, work, places):
     """Minimises a failure and stores it as a regression case; returns a description."""
     art = pathlib.Path(artifact)
     kind = art.name.split("-")[0]
     minimized = work / f"min-{art.name}"
     if kind == "crash":
-        subprocess.run([str(binary), "-minimize_crash=1", "-runs=3000", "-max_total_time=120",
+        shielded([str(binary), "-minimize_crash=1", "-runs=3000", "-max_total_time=120",
                         f"-exact_artifact_path={minimized}", str(art)], cwd=work, capture_output=True)
     # libFuzzer's minimiser keeps any failing input, and a shorter input often fails another law:
     # keep the minimised input only when it still fails the same way.
@@ -208,20 +311,20 @@ def to_regression(binary, target, artifact, work):
         minimized.unlink()
     if not minimized.exists():
         shutil.copy(art, minimized)
-    regressions = ROOT / "tests/regressions"
+    regressions = places.regressions
     regressions.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, COLLIDE_FUZZ_CASE_DIR=str(regressions))
-    r = subprocess.run([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(minimized)], cwd=work, env=env,
+    r = shielded([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(minimized)], cwd=work, env=env,
                        capture_output=True, text=True, errors="replace")
     report = r.stderr
     entry = {"artifact": str(art), "kind": kind, "bytes": minimized.stat().st_size}
     m = CASE_RE.search(report) or RAW_RE.search(report)
     if m:
         path = pathlib.Path(m.group(1))
-        entry["case_file"] = str(path.relative_to(ROOT)) if path.is_relative_to(ROOT) else str(path)
+        entry["case_file"] = shown(path)
         svg = path.with_suffix(".svg")
         if svg.exists():
-            entry["svg"] = str(svg.relative_to(ROOT)) if svg.is_relative_to(ROOT) else str(svg)
+            entry["svg"] = shown(svg)
     else:
         # A sanitizer report, a timeout or an out-of-memory: keep the raw input and the report.
         data = minimized.read_bytes()
@@ -231,24 +334,30 @@ def to_regression(binary, target, artifact, work):
         stem = regressions / f"{target}-{h:08x}"
         stem.with_suffix(".input").write_bytes(data)
         stem.with_suffix(".txt").write_text(f"fuzz target {target} ({kind})\n" + report[-6000:])
-        entry["case_file"] = str(stem.with_suffix(".input").relative_to(ROOT))
+        entry["case_file"] = shown(stem.with_suffix(".input"))
     summary = [ln.strip() for ln in report.splitlines()
                if ln.startswith("==") or "SUMMARY" in ln or ln.strip().startswith(("expected:", "got:"))]
     entry["summary"] = " | ".join(summary[:4])[:600]
     return entry
 
 
-def write_reports(results, args, build):
-    reports = ROOT / "build/reports"
+def write_reports(results, build, places, plan):
+    reports = places.reports
     reports.mkdir(parents=True, exist_ok=True)
-    doc = {"build_dir": str(build), "sanitizers": not args.no_sanitizers, "jobs": args.jobs, "targets": results,
-           "failures": sum(len(r["failures"]) for r in results)}
+    unfinished = [t for t in plan["targets"] if t not in plan["done"]]
+    doc = {"build_dir": str(build), "sanitizers": plan["sanitizers"], "jobs": plan["jobs"], "targets": results,
+           "failures": sum(len(r["failures"]) for r in results),
+           "interrupted": bool(unfinished), "unfinished_targets": unfinished}
     (reports / "fuzz.json").write_text(json.dumps(doc, indent=2) + "\n")
     lines = ["# Fuzzing report", "",
-             f"Build: `{build.relative_to(ROOT) if build.is_relative_to(ROOT) else build}` "
-             f"({'ASan + UBSan' if not args.no_sanitizers else 'no sanitizers'}), fork workers per target: {args.jobs}.",
+             f"Build: `{shown(build)}` "
+             f"({'executables as given' if plan['fuzzer_dir'] else 'ASan + UBSan' if plan['sanitizers'] else 'no sanitizers'})"
+             f", fork workers per target: {plan['jobs']}.",
              "", "| target | time (s) | executions | exec/s | coverage (edges / features) | corpus | new inputs | failures |",
              "|---|---:|---:|---:|---|---:|---:|---:|"]
+    if unfinished:
+        lines[2:2] = [f"**Interrupted**: {', '.join(unfinished)} not finished; `./harness fuzz --resume` "
+                      "runs what is left.", ""]
     for r in results:
         lines.append(f"| {r['target']} | {r['seconds']} | {r['executions']} | {r['exec_per_s']} | "
                      f"{r['coverage_edges']} / {r['features']} | {r.get('corpus_after', r['corpus'])} | "
@@ -265,6 +374,32 @@ def write_reports(results, args, build):
     return reports
 
 
+def combine(before, part):
+    """The result of a target run in parts (interrupted, then resumed)."""
+    if before is None:
+        return part
+    out = dict(part)
+    for key in ("seconds", "executions", "new_inputs", "failure_inputs"):
+        out[key] = round(before.get(key, 0) + part.get(key, 0), 1)
+    out["exec_per_s"] = round(out["executions"] / out["seconds"]) if out["seconds"] > 0 else 0
+    # A failure found again after the resume is one failure, promoted once (same case file).
+    seen = {f["signature"]: f for f in before["failures"]}
+    for f in part["failures"]:
+        if f["signature"] in seen:
+            seen[f["signature"]] = dict(seen[f["signature"]], inputs=seen[f["signature"]]["inputs"] + f["inputs"])
+        else:
+            seen[f["signature"]] = f
+    out["failures"] = list(seen.values())
+    return out
+
+
+def save_plan(places, plan):
+    places.runs.mkdir(parents=True, exist_ok=True)
+    tmp = places.state.with_suffix(".tmp")
+    tmp.write_text(json.dumps(plan, indent=2) + "\n")
+    tmp.replace(places.state)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
@@ -276,38 +411,99 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="fork workers per target and build parallelism (default 2)")
     ap.add_argument("--no-sanitizers", action="store_true", help="build and run without ASan/UBSan (speed)")
     ap.add_argument("--no-merge", action="store_true", help="leave fuzz/corpus/ unchanged")
+    ap.add_argument("--resume", action="store_true",
+                    help="go on with an interrupted run (its targets, time and options; others are ignored)")
+    ap.add_argument("--progress-seconds", type=float, default=60, help="interval of the progress line (default 60)")
+    ap.add_argument("--fuzzer-dir", help="use the fuzzer executables <dir>/<target> as they are (no configure/build)")
+    ap.add_argument("--corpus-dir", help="corpus root (default fuzz/corpus)")
+    ap.add_argument("--regressions-dir", help="where failures become cases (default tests/regressions)")
+    ap.add_argument("--runs-dir", help="scratch and the resumable state (default build/fuzz-runs)")
+    ap.add_argument("--reports-dir", help="fuzz.md and fuzz.json (default build/reports)")
     args = ap.parse_args()
-    total = (args.hours * 3600 if args.hours else (args.minutes if args.minutes is not None else 10) * 60)
+    places = Places(args)
 
-    build = choose_build_dir(args.build_dir, args.no_sanitizers)
-    targets = configure_and_build(build, args.target, args.jobs, args.no_sanitizers)
-    if targets is None:
-        return 2
-    per_target = max(10, int(total / len(targets)))
-    log(f"fuzzing {', '.join(targets)}: {per_target} s each, {args.jobs} fork workers")
-    results = []
-    for t in targets:
-        binary = build / "fuzz/bin" / t
-        work = ROOT / "build/fuzz-runs" / t
-        log(f"== {t}")
-        res = run_target(binary, t, per_target, args.jobs, work)
-        if not args.no_merge:
-            res["new_inputs"], res["corpus_after"] = merge(binary, t, work)
+    if args.resume:
+        if not places.state.exists():
+            log(f"fuzz/run.py: nothing to resume ({shown(places.state)} does not exist: the last run finished)")
+            return 2
+        plan = json.loads(places.state.read_text())
+        log(f"resuming: {', '.join(t for t in plan['targets'] if t not in plan['done'])} left of "
+            f"{', '.join(plan['targets'])}")
+    else:
+        if places.state.exists():
+            log(f"note: the plan of an interrupted run ({shown(places.state)}) is replaced by this run's "
+                "(--resume would have continued it)")
+        total = (args.hours * 3600 if args.hours else (args.minutes if args.minutes is not None else 10) * 60)
+        plan = {"targets": args.target or [], "total_seconds": total, "jobs": args.jobs,
+                "sanitizers": not args.no_sanitizers, "merge": not args.no_merge,
+                "fuzzer_dir": str(pathlib.Path(args.fuzzer_dir).resolve()) if args.fuzzer_dir else None,
+                "build_dir": args.build_dir, "done": {}, "partial": {}}
+
+    if plan["fuzzer_dir"]:
+        build = pathlib.Path(plan["fuzzer_dir"])
+        bin_dir = build
+        targets = plan["targets"] or sorted(p.name for p in bin_dir.iterdir() if os.access(p, os.X_OK))
+    else:
+        build = choose_build_dir(plan["build_dir"], not plan["sanitizers"])
+        bin_dir = build / "fuzz/bin"
+        targets = configure_and_build(build, plan["targets"], plan["jobs"], not plan["sanitizers"])
+        if targets is None:
+            return 2
+    if not args.resume:
+        plan["targets"] = targets
+        plan["per_target"] = max(10, int(plan["total_seconds"] / len(targets)))
+        save_plan(places, plan)
+    per_target, jobs = plan["per_target"], plan["jobs"]
+
+    stop = Stop()
+    stop.install()
+    spent = sum(r["seconds"] for r in plan["done"].values()) + sum(r["seconds"] for r in plan["partial"].values())
+    ticker = Ticker(per_target * len(targets), spent, args.progress_seconds)
+    log(f"fuzzing {', '.join(targets)}: {per_target} s each, {jobs} fork workers; "
+        f"progress every {args.progress_seconds:g} s; Ctrl-C or SIGTERM stops, merges and reports")
+    for i, t in enumerate(targets):
+        if t in plan["done"]:
+            continue
+        if stop.signal is not None:
+            break
+        binary = bin_dir / t
+        work = places.runs / t
+        before = plan["partial"].get(t)
+        seconds = max(1, int(per_target - (before["seconds"] if before else 0)))
+        log(f"== {t} ({i + 1}/{len(targets)}, {seconds} s{', resumed' if before else ''})")
+        res = run_target(binary, t, seconds, jobs, work, places, stop, ticker, f"{t} ({i + 1}/{len(targets)})",
+                         keep_inputs=before is not None)
+        if plan["merge"]:
+            res["new_inputs"], res["corpus_after"] = merge(binary, t, work, places)
         artifacts = res.pop("artifacts")
         res["failure_inputs"] = len(artifacts)
+        ticker.failures_before += len(artifacts)
         res["failures"] = []
         for art, count, sig in distinct_failures(binary, artifacts, work):
-            entry = to_regression(binary, t, art, work)
+            entry = to_regression(binary, t, art, work, places)
             entry.update({"inputs": count, "signature": sig})
             res["failures"].append(entry)
+        res = combine(before, res)
         log(f"  {t}: {res['executions']} executions, {res['exec_per_s']} exec/s, cov {res['coverage_edges']}, "
             f"{res.get('new_inputs', 0)} new inputs, {len(res['failures'])} distinct failures "
-            f"({res['failure_inputs']} failing inputs)")
+            f"({res['failure_inputs']} failing inputs){', interrupted' if res['interrupted'] else ''}")
         for f in res["failures"]:
             log(f"    {f['kind']} x{f['inputs']}: {f.get('case_file')}  {f.get('summary', '')[:200]}")
-        results.append(res)
-    reports = write_reports(results, args, build)
+        if res["interrupted"]:
+            plan["partial"][t] = res
+        else:
+            plan["partial"].pop(t, None)
+            plan["done"][t] = res
+        save_plan(places, plan)
+
+    results = [plan["done"].get(t) or plan["partial"][t] for t in targets
+               if t in plan["done"] or t in plan["partial"]]
+    reports = write_reports(results, build, places, plan)
     log(f"reports: {reports / 'fuzz.md'}, {reports / 'fuzz.json'}")
+    if stop.signal is not None:
+        log(f"interrupted: resume with `./harness fuzz --resume` (plan in {shown(places.state)})")
+    else:
+        places.state.unlink(missing_ok=True)
     return 1 if any(r["failures"] for r in results) else 0
 
 
