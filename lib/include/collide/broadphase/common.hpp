@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -72,6 +73,26 @@ struct ProxyPair {
   ProxyId b;
   friend constexpr bool operator==(const ProxyPair&, const ProxyPair&) = default;
   friend constexpr auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
+};
+
+/// Collision filter of a proxy (or of a query): a pair (or a hit) is reported only when
+/// `(a.category & b.mask) != 0 && (b.category & a.mask) != 0`. A proxy whose category or mask is
+/// 0 is never reported by anything.
+struct Filter {
+  std::uint32_t category = 1;          ///< which groups this proxy belongs to (bits)
+  std::uint32_t mask = 0xffffffffu;    ///< which groups this proxy pairs with (bits)
+  /// The filter that accepts every proxy with a non-zero category and mask (queries' default).
+  static constexpr Filter everything() noexcept { return {0xffffffffu, 0xffffffffu}; }
+  friend constexpr bool operator==(const Filter&, const Filter&) = default;
+};
+
+/// The pairing rule of two filters (symmetric).
+constexpr bool accepts(Filter a, Filter b) noexcept { return (a.category & b.mask) != 0 && (b.category & a.mask) != 0; }
+
+/// A proxy met by a ray: the handle and the entry parameter t (units of |direction|).
+struct ProxyHit {
+  ProxyId id;  ///< the proxy
+  Calc t = 0;  ///< entry parameter, 0 <= t <= max_t
 };
 
 /// Order of the pair list: Any is whatever the structure finds fastest; Sorted is ascending by
@@ -211,6 +232,7 @@ class Slots {
   struct Slot {
     Box<T> box{};
     std::uint64_t user = 0;
+    Filter filter{};
     std::uint32_t generation = 0;
     bool live = false;
     Extra extra{};
@@ -225,7 +247,7 @@ class Slots {
   bool contains(ProxyId id) const noexcept {
     return id.index < slots_.size() && slots_[id.index].live && slots_[id.index].generation == id.generation;
   }
-  ProxyId allocate(const Box<T>& box, std::uint64_t user) {
+  ProxyId allocate(const Box<T>& box, std::uint64_t user, Filter filter) {
     std::uint32_t i;
     if (!free_.empty()) {
       i = free_.back();
@@ -239,6 +261,7 @@ class Slots {
     Slot& s = slots_[i];
     s.box = box;
     s.user = user;
+    s.filter = filter;
     s.live = true;
     s.extra = Extra{};
     ++live_;
@@ -267,18 +290,60 @@ class Slots {
   std::size_t live_ = 0;
 };
 
+/// Orders a pair by slot index.
+inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
+  return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};
+}
+
+/// Traversal stack local to one call: kInline entries live in the call's frame, deeper
+/// traversals spill to the heap. Local, so nested and concurrent queries never share it.
+template <class V, std::size_t kInline = 128>
+class LocalStack {
+ public:
+  void push(const V& v) {
+    if (n_ < kInline) {
+      inline_[n_] = v;
+    } else {
+      heap_.push_back(v);
+    }
+    ++n_;
+  }
+  V pop() {
+    --n_;
+    if (n_ < kInline) return inline_[n_];
+    const V v = heap_.back();
+    heap_.pop_back();
+    return v;
+  }
+  bool empty() const noexcept { return n_ == 0; }
+
+ private:
+  V inline_[kInline];
+  std::vector<V> heap_;
+  std::size_t n_ = 0;
+};
+
 /// The proxy operations all three structures offer identically. Derived supplies
-/// add_box(Box, user) -> ProxyId, move_box(ProxyId, Box), unlink(slot) (drop the slot from its
-/// index before the slot is released), raycast(origin, direction, max_t, f), and a member
-/// `slots_` (a Slots table); it befriends this class and re-exports raycast with a using.
+/// add_box(Box, user, filter) -> ProxyId, move_box(ProxyId, Box), unlink(slot) (drop the slot from
+/// its index before the slot is released), query(Aabb, f, filter), raycast(origin, direction,
+/// max_t, f, filter), and a member `slots_` (a Slots table); it befriends this class and
+/// re-exports raycast with a using.
+///
+/// Thread safety (all three structures): every const member function only reads the structure
+/// and keeps its traversal state on the caller's stack, so any number of threads may call const
+/// members at once while no thread calls a non-const one, and a callback may call any const
+/// member of the same or another structure (nested queries). A callback must not modify the
+/// structure it is called from.
 template <class Derived, Scalar T>
 class ProxyOps {
  public:
-  /// Adds a proxy for box, carrying user (returned by user_data()).
-  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return self().add_box(box_of(box), user); }
+  /// Adds a proxy for box, carrying user (returned by user_data()) and a filter.
+  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0, Filter filter = {}) {
+    return self().add_box(box_of(box), user, filter);
+  }
   /// Adds a proxy from raw corners. Errors: BadBox.
-  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
-    return self().add_box(checked_box(min, max), user);
+  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0, Filter filter = {}) {
+    return self().add_box(checked_box(min, max), user, filter);
   }
   /// Replaces the proxy's box. Errors: InvalidProxy.
   void move(ProxyId id, const Aabb<T>& box) { self().move_box(id, box_of(box)); }
@@ -293,7 +358,11 @@ class ProxyOps {
     self().unlink(s);
     self().slots_.release(s);
   }
+  /// Replaces the proxy's filter (takes effect for every later call). Errors: InvalidProxy.
+  void set_filter(ProxyId id, Filter filter) { self().slots_[self().slots_.check(id)].filter = filter; }
+  /// True when id names a live proxy of this structure.
   bool contains(ProxyId id) const noexcept { return self().slots_.contains(id); }
+  /// Number of live proxies.
   std::size_t size() const noexcept { return self().slots_.size(); }
   /// Stored box. Errors: InvalidProxy.
   Aabb<T> box(ProxyId id) const {
@@ -302,12 +371,43 @@ class ProxyOps {
   }
   /// Errors: InvalidProxy.
   std::uint64_t user_data(ProxyId id) const { return self().slots_[self().slots_.check(id)].user; }
+  /// Errors: InvalidProxy.
+  Filter filter(ProxyId id) const { return self().slots_[self().slots_.check(id)].filter; }
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the ray (t in units of
-  /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside). f may return
-  /// bool; false stops. Errors: BadRay.
+  /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside) and whose
+  /// filter accepts `filter`. f may return bool; false stops. Errors: BadRay.
   template <class F>
-  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
-    self().raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
+  void raycast(const Ray<T>& ray, T max_t, F&& f, Filter filter = Filter::everything()) const {
+    self().raycast(ray.origin, ray.direction, max_t, std::forward<F>(f), filter);
+  }
+  /// The proxy whose stored box the ray enters first (smallest t; ties: lowest slot index), or
+  /// nothing. Errors: BadRay.
+  std::optional<ProxyHit> raycast_closest(const Vec2<T>& origin, const Vec2<T>& direction, T max_t,
+                                          Filter filter = Filter::everything()) const {
+    std::optional<ProxyHit> best;
+    self().raycast(
+        origin, direction, max_t,
+        [&](ProxyId id, Calc t) {
+          if (!best || t < best->t || (t == best->t && id.index < best->id.index)) best = ProxyHit{id, t};
+        },
+        filter);
+    return best;
+  }
+  /// Calls f(ProxyId) for every proxy whose stored box contains point p (closed) and whose filter
+  /// accepts `filter`. f may return bool; false stops. Errors: BadBox (p is NaN or infinite).
+  template <class F>
+  void query_point(const Vec2<T>& p, F&& f, Filter filter = Filter::everything()) const {
+    const Expected<Aabb<T>> b = Aabb<T>::make(p, p);
+    if (!b) throw BroadphaseError(BroadphaseErrc::BadBox, b.error().what());
+    self().query(b.value(), std::forward<F>(f), filter);
+  }
+  /// Every pair of proxies whose stored boxes overlap (closed) and whose filters accept each
+  /// other, each once, a.index < b.index. Builds the list: for very many pairs use for_each_pair().
+  std::vector<ProxyPair> pairs(PairOrder order = PairOrder::Any) const {
+    std::vector<ProxyPair> out;
+    self().for_each_pair([&](ProxyId a, ProxyId b) { out.push_back(ordered_pair(a, b)); });
+    if (order == PairOrder::Sorted) std::sort(out.begin(), out.end());
+    return out;
   }
 
  private:
@@ -315,11 +415,8 @@ class ProxyOps {
   const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
 };
 
-/// Orders a pair by slot index.
-inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
-  return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};
-}
 
+/// Sorts a pair list when asked to.
 inline void finish_pairs(std::vector<ProxyPair>& pairs, PairOrder order) {
   if (order == PairOrder::Sorted) std::sort(pairs.begin(), pairs.end());
 }

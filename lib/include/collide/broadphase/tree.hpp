@@ -14,6 +14,7 @@ namespace collide::broadphase {
 /// Dynamic AABB tree over closed boxes of scalar T.
 ///
 /// Pairs and queries are decided on the stored (unfattened) boxes: fattening only adds candidates.
+/// Const members are re-entrant and may run on many threads at once (see ProxyOps).
 template <Scalar T>
 class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
  public:
@@ -28,76 +29,74 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return Aabb<T>::make(b.min, b.max).value();
   }
 
-  /// Calls f(ProxyId) for every proxy whose stored box meets q (closed). f may return bool;
-  /// false stops the query.
+  /// Calls f(ProxyId) for every proxy whose stored box meets q (closed) and whose filter accepts
+  /// `filter`. f may return bool; false stops the query. Re-entrant and thread-safe (see ProxyOps).
   template <class F>
-  void query(const Aabb<T>& q, F&& f) const {
-    visit_overlapping(box_of(q), [&](std::uint32_t s) { return call_continue(f, slots_.id(s)); });
+  void query(const Aabb<T>& q, F&& f, Filter filter = Filter::everything()) const {
+    const Box<T> qb = box_of(q);
+    visit([&](const Box<T>& b) { return boxes_overlap(b, qb); },
+          [&](std::uint32_t s) {
+            if (!boxes_overlap(slots_[s].box, qb) || !accepts(slots_[s].filter, filter)) return true;
+            return call_continue(f, slots_.id(s));
+          });
   }
 
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the segment origin + t direction,
-  /// t in [0, max_t]; t is the entry parameter (0 if origin is inside). f may return bool; false
-  /// stops. Errors: BadRay.
+  /// t in [0, max_t], and whose filter accepts `filter`; t is the entry parameter (0 if origin is
+  /// inside). f may return bool; false stops. Errors: BadRay.
   template <class F>
-  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
+  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f,
+               Filter filter = Filter::everything()) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
-    if (root_ < 0) return;
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const Node& n = nodes_[stack_.back()];
-      stack_.pop_back();
-      if (ray_hits_box(r, n.box) < 0) continue;
-      if (n.leaf()) {
-        const Calc t = ray_hits_box(r, slots_[n.slot].box);
-        if (t >= 0 && !call_continue(f, slots_.id(n.slot), t)) return;
-      } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
-      }
-    }
+    visit([&](const Box<T>& b) { return ray_hits_box(r, b) >= 0; },
+          [&](std::uint32_t s) {
+            if (!accepts(slots_[s].filter, filter)) return true;
+            const Calc t = ray_hits_box(r, slots_[s].box);
+            return t < 0 || call_continue(f, slots_.id(s), t);
+          });
   }
 
-  /// Every pair of proxies whose stored boxes overlap (closed), each once, a.index < b.index.
-  std::vector<ProxyPair> pairs(PairOrder order = PairOrder::Any) const {
-    std::vector<ProxyPair> out;
-    if (root_ < 0) return out;
+  /// Calls f(ProxyId a, ProxyId b) once for every pair of proxies whose stored boxes overlap
+  /// (closed) and whose filters accept each other; f may return bool, false stops. Builds no
+  /// list, so any number of pairs can be visited in constant memory beyond the traversal stack.
+  template <class F>
+  void for_each_pair(F&& f) const {
+    if (root_ < 0) return;
     struct Job {
       std::int32_t a, b;
     };
-    std::vector<Job> jobs;
-    jobs.push_back({root_, root_});
+    LocalStack<Job> jobs;
+    jobs.push({root_, root_});
     while (!jobs.empty()) {
-      const Job j = jobs.back();
-      jobs.pop_back();
+      const Job j = jobs.pop();
       const Node& a = nodes_[j.a];
       if (j.a == j.b) {
         if (a.leaf()) continue;
-        jobs.push_back({a.child1, a.child1});
-        jobs.push_back({a.child2, a.child2});
-        jobs.push_back({a.child1, a.child2});
+        jobs.push({a.child1, a.child1});
+        jobs.push({a.child2, a.child2});
+        jobs.push({a.child1, a.child2});
         continue;
       }
       const Node& b = nodes_[j.b];
       if (!boxes_overlap(a.box, b.box)) continue;
       if (a.leaf() && b.leaf()) {
+        const auto& sa = slots_[a.slot];
+        const auto& sb = slots_[b.slot];
 #if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 2
         // Planted fault 2 (tests only): the fat boxes decide, so fattening adds false pairs.
-        if (boxes_overlap(a.box, b.box))
+        const bool hit = boxes_overlap(a.box, b.box);
 #else
-        if (boxes_overlap(slots_[a.slot].box, slots_[b.slot].box))
+        const bool hit = boxes_overlap(sa.box, sb.box);
 #endif
-          out.push_back(ordered_pair(slots_.id(a.slot), slots_.id(b.slot)));
+        if (hit && accepts(sa.filter, sb.filter) && !call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
       } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
-        jobs.push_back({a.child1, j.b});
-        jobs.push_back({a.child2, j.b});
+        jobs.push({a.child1, j.b});
+        jobs.push({a.child2, j.b});
       } else {
-        jobs.push_back({j.a, b.child1});
-        jobs.push_back({j.a, b.child2});
+        jobs.push({j.a, b.child1});
+        jobs.push({j.a, b.child2});
       }
     }
-    finish_pairs(out, order);
-    return out;
   }
 
   /// Height of the tree (0 for one leaf, -1 when empty).
@@ -157,26 +156,27 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return 2 * ((Calc(b.max.x()) - Calc(b.min.x())) + (Calc(b.max.y()) - Calc(b.min.y())));
   }
 
-  template <class F>
-  void visit_overlapping(const Box<T>& q, F&& f) const {
+  /// Depth-first walk: descends into nodes whose (fat) box passes `enter`, calls leaf(slot) at
+  /// each leaf reached; leaf returning false stops. The stack is local to the call.
+  template <class Enter, class Leaf>
+  void visit(Enter&& enter, Leaf&& leaf) const {
     if (root_ < 0) return;
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const Node& n = nodes_[stack_.back()];
-      stack_.pop_back();
-      if (!boxes_overlap(n.box, q)) continue;
+    LocalStack<std::int32_t> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+      const Node& n = nodes_[stack.pop()];
+      if (!enter(n.box)) continue;
       if (n.leaf()) {
-        if (boxes_overlap(slots_[n.slot].box, q) && !f(n.slot)) return;
+        if (!leaf(n.slot)) return;
       } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
+        stack.push(n.child1);
+        stack.push(n.child2);
       }
     }
   }
 
-  ProxyId add_box(const Box<T>& b, std::uint64_t user) {
-    const ProxyId id = slots_.allocate(b, user);
+  ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {
+    const ProxyId id = slots_.allocate(b, user, filter);
     const std::int32_t leaf = alloc_node();
     nodes_[leaf].box = fattened(b, margin_);
     nodes_[leaf].slot = id.index;
@@ -332,7 +332,6 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   std::vector<Node> nodes_;
   std::vector<std::int32_t> free_nodes_;
   std::int32_t root_ = -1;
-  mutable std::vector<std::int32_t> stack_;
 };
 
 }  // namespace collide::broadphase
