@@ -103,6 +103,18 @@ def main():
             for impl in ("tree", "sweep", "grid"):
                 row["box2d_over_" + impl] = ratio(b2, row[impl + "_ns_per_box"])
             broad.append(row)
+    # Pair events per frame (every box moves): collide's PairTracker over each structure against
+    # Box2D's b2BroadPhase (MoveProxy + UpdatePairs); ratio = collide / Box2D, < 1 is faster.
+    events = []
+    for n in sizes:
+        b2 = m.get("broadphase/events/box2d_broadphase/%d" % n)
+        if b2 is None:
+            continue
+        row = {"n": n, "box2d_broadphase_ns_per_box": b2}
+        for impl in ("tree", "sweep", "grid"):
+            row[impl + "_ns_per_box"] = m.get("broadphase/events/%s/%d" % (impl, n))
+            row[impl + "_over_box2d"] = ratio(row[impl + "_ns_per_box"], b2)
+        events.append(row)
 
     def fmt(x, w=8):
         return ("%*.2f" % (w, x)) if isinstance(x, (int, float)) and x is not None else " " * (w - 1) + "-"
@@ -125,6 +137,15 @@ def main():
             fmt(r["box2d_tree_ns_per_box"], 10), fmt(r["brute_ns_per_box"], 9), fmt(r["box2d_over_tree"], 7),
             fmt(r["box2d_over_sweep"], 7), fmt(r["box2d_over_grid"], 7)))
 
+    if events:
+        print("\nPair events per frame, every box moving (ns per box; ratio = collide / Box2D b2BroadPhase)")
+        print("%-7s %9s %9s %9s %10s | %7s %7s %7s" % ("N", "tree", "sweep", "grid", "b2BroadPh", "tree", "sweep", "grid"))
+        for r in events:
+            print("%-7d %s %s %s %s | %s %s %s" % (
+                r["n"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
+                fmt(r["box2d_broadphase_ns_per_box"], 10), fmt(r["tree_over_box2d"], 7), fmt(r["sweep_over_box2d"], 7),
+                fmt(r["grid_over_box2d"], 7)))
+
     goals = []
     for r in pairs:
         for peer in ("ratio_vs_test_overlap", "ratio_vs_manifold"):
@@ -141,12 +162,20 @@ def main():
             best = max(v for v in (r["box2d_over_tree"], r["box2d_over_sweep"], r["box2d_over_grid"]) if v is not None)
             goals.append({"goal": "broadphase all-pairs at 100k >= 5x faster per box than Box2D tree queries",
                           "value": best, "met": best >= 5})
+    for r in events:
+        best = min(v for v in (r["tree_over_box2d"], r["sweep_over_box2d"], r["grid_over_box2d"]) if v is not None)
+        goals.append({"goal": "pair-event update at %d moving boxes <= 0.5x Box2D b2BroadPhase" % r["n"],
+                      "value": best, "met": best <= 0.5})
+    for r in broad:
+        if r["op"] == "build" and r["n"] >= 10000 and r["box2d_over_tree"] is not None:
+            goals.append({"goal": "tree build at %d >= 1.0x Box2D tree's speed" % r["n"],
+                          "value": r["box2d_over_tree"], "met": r["box2d_over_tree"] >= 1.0})
     print("\nGoals:")
     for g in goals:
         print("  [%s] %s: %s" % ("met" if g["met"] else "MISSED", g["goal"], g["value"]))
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
-           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
+           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad, "broadphase_events": events,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:
