@@ -2,7 +2,7 @@
 """Builds collide_bench (Release), runs it with repetitions, prints the collide/Box2D ratio table
 and writes build/reports/bench.json. Every ratio comes from one run of one binary.
 
-Usage: bench/run.py [--build-dir D] [--repetitions R] [--min-time S] [--filter REGEX]
+Usage: bench/run.py [--build-dir D] [--repetitions R] [--min-time S] [--filter REGEX] [--scale]
 Figures are medians over the repetitions of CPU time per pair (or per box); on a shared 2-core
 machine they are noisy (+-20% or worse while others compile).
 """
@@ -70,7 +70,14 @@ def main():
     ap.add_argument("--repetitions", type=int, default=3)
     ap.add_argument("--min-time", type=float, default=0.05, help="seconds per repetition per benchmark")
     ap.add_argument("--filter", default="", help="benchmark name regex (default: all)")
+    ap.add_argument("--scale", action="store_true",
+                    help="only the broadphase scale and bad-load program (1M boxes; 10k all overlapping)")
     args = ap.parse_args()
+    if args.scale:
+        subprocess.run(["cmake", "--build", os.path.abspath(args.build_dir), "--target", "collide_broadphase_scale",
+                        "-j2"], cwd=ROOT, check=True)
+        exe = os.path.join(os.path.abspath(args.build_dir), "bench", "collide_broadphase_scale")
+        sys.exit(subprocess.run([exe]).returncode)
     build_dir = os.path.abspath(args.build_dir)
     exe = build(build_dir)
     reports = os.path.join(ROOT, "build", "reports")
