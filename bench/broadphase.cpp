@@ -306,7 +306,11 @@ bool check_world(const World& w) {
   std::vector<Pair> b2p;
   b2.all_pairs(b2p);
   std::sort(b2p.begin(), b2p.end());
+  bp::DynamicTree<float> batch(0.1f);
+  batch.add_batch(w.boxes);
+  ok = ok && batch.check_invariants();
   const auto t = as_pairs(tree, tree.pairs());
+  ok = ok && t == as_pairs(batch, batch.pairs());
   ok = ok && t == as_pairs(sweep, sweep.pairs()) && t == as_pairs(grid, grid.pairs()) && t == b2p;
   if (w.boxes.size() <= 10000) ok = ok && t == brute(w.boxes);
   // Move 10% and compare the pairs of the moved boxes.
@@ -342,6 +346,15 @@ bool register_broadphase() {
     const auto w = make_world(n);
     ok = check_world(*w) && ok;
     register_structure<bp::DynamicTree<float>>("tree", w);
+    benchmark::RegisterBenchmark(("broadphase/build/tree_batch/" + std::to_string(n)).c_str(),
+                                 [w](benchmark::State& st) {
+                                   for (auto _ : st) {
+                                     bp::DynamicTree<float> t(0.1f);
+                                     benchmark::DoNotOptimize(t.add_batch(w->boxes).data());
+                                   }
+                                   st.counters["boxes"] = double(w->boxes.size());
+                                 })
+        ->Unit(benchmark::kMillisecond);
     register_structure<bp::SweepAndPrune<float>>("sweep", w);
     register_structure<bp::UniformGrid<float>>("grid", w);
     if (n >= 10000) {

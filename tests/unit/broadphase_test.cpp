@@ -297,6 +297,31 @@ TEST(BroadphaseTreeBoxes, FatBoxKeptForSmallMovesAndRebuiltForLargeOnes) {
   EXPECT_TRUE(t.check_invariants());
 }
 
+TEST(BroadphaseTreeBoxes, AddBatchFindsTheSamePairsAsAddingOneByOne) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> pos(0, 30), size(0.2f, 2.0f);
+  std::vector<Aabb<float>> boxes;
+  for (int i = 0; i < 500; ++i) {
+    const Vec2<float> lo(pos(rng), pos(rng));
+    boxes.emplace_back(lo, Vec2<float>(lo + Vec2<float>(size(rng), size(rng))));
+  }
+  bp::DynamicTree<float> one(0.1f), batch(0.1f);
+  for (std::size_t i = 0; i < boxes.size(); ++i) one.add(boxes[i], i);
+  const auto ids = batch.add_batch(boxes);
+  ASSERT_EQ(ids.size(), boxes.size());
+  EXPECT_TRUE(batch.check_invariants());
+  EXPECT_LE(batch.height(), 10);  // top down: balanced (log2 500 < 9)
+  for (std::size_t i = 0; i < ids.size(); ++i) EXPECT_EQ(batch.user_data(ids[i]), i);
+  EXPECT_EQ(user_pairs(batch), user_pairs(one));
+  // Into a non-empty tree, one by one; moves and removals work on batch-built leaves.
+  const auto more = batch.add_batch(std::span<const Aabb<float>>(boxes).first(10), 1000);
+  EXPECT_EQ(batch.size(), 510u);
+  batch.move(ids[0], Aabb<float>(Vec2<float>(100, 100), Vec2<float>(101, 101)));
+  batch.remove(more[3]);
+  EXPECT_TRUE(batch.check_invariants());
+  EXPECT_EQ(query_users(batch, Aabb<float>(Vec2<float>(100, 100), Vec2<float>(100, 100))), (U{0}));
+}
+
 // The grid hashes cell (x, y) as two 32-bit halves of one key: a negative y must not spill into
 // the x half, or cells (0, -1) and (-1, -1) share a key and pairs reported per cell are lost.
 TEST(BroadphaseGridKeys, NegativeCellIndicesKeepTheirOwnCells) {

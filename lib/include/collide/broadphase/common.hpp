@@ -273,6 +273,8 @@ class Slots {
     free_.push_back(i);
     --live_;
   }
+  /// Reserves room for n slots in all.
+  void reserve(std::size_t n) { slots_.reserve(n); }
   Slot& operator[](std::uint32_t i) noexcept { return slots_[i]; }
   const Slot& operator[](std::uint32_t i) const noexcept { return slots_[i]; }
   ProxyId id(std::uint32_t i) const noexcept { return {i, slots_[i].generation}; }

@@ -6,7 +6,10 @@
 
 #include "collide/broadphase/common.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <vector>
 
 namespace collide::broadphase {
@@ -22,6 +25,38 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   /// margin: how far each stored box is grown on every side (world units). A move that keeps
   /// the new box inside the fat box does not touch the tree. Errors: BadMargin.
   explicit DynamicTree(T margin = T(0.1)) : margin_(checked_margin(margin)) {}
+
+  /// Adds one proxy per box (user data first_user + i, one filter for all) and returns their
+  /// handles in order. Into an empty tree the leaves are built top down (median split on the
+  /// longer axis of the box centres), faster than adding one by one and as good a tree;
+  /// otherwise they are inserted one by one. Errors: TooManyProxies (nothing is added).
+  std::vector<ProxyId> add_batch(std::span<const Aabb<T>> boxes, std::uint64_t first_user = 0, Filter filter = {}) {
+    std::vector<ProxyId> ids;
+    ids.reserve(boxes.size());
+    if (slots_.capacity() + boxes.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
+      throw BroadphaseError(BroadphaseErrc::TooManyProxies, "too many proxies");
+    if (root_ >= 0 || boxes.size() < 2) {
+      for (std::size_t i = 0; i < boxes.size(); ++i) ids.push_back(add_box(box_of(boxes[i]), first_user + i, filter));
+      return ids;
+    }
+    nodes_.reserve(nodes_.size() + 2 * boxes.size());
+    slots_.reserve(slots_.capacity() + boxes.size());
+    std::vector<Centred> leaves;
+    leaves.reserve(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const Box<T> b = box_of(boxes[i]);
+      const ProxyId id = slots_.allocate(b, first_user + i, filter);
+      const std::int32_t leaf = alloc_node();
+      nodes_[leaf].box = fattened(b, margin_);
+      nodes_[leaf].slot = id.index;
+      slots_[id.index].extra.leaf = leaf;
+      leaves.push_back({{Calc(b.min.x()) + Calc(b.max.x()), Calc(b.min.y()) + Calc(b.max.y())}, leaf});
+      ids.push_back(id);
+    }
+    root_ = build_top_down(leaves.data(), leaves.data() + leaves.size());
+    nodes_[root_].parent = -1;
+    return ids;
+  }
 
   /// Fat box of a proxy (contains box(id)). Errors: InvalidProxy.
   Aabb<T> fat_box(ProxyId id) const {
@@ -173,6 +208,37 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
         stack.push(n.child2);
       }
     }
+  }
+
+  /// A leaf and twice its box centre, for the top-down build.
+  struct Centred {
+    Calc c[2];
+    std::int32_t leaf;
+  };
+
+  /// Builds a subtree over leaves [first, last) (at least one): splits at the median centre on
+  /// the longer axis of the centres' extent. Returns its root.
+  std::int32_t build_top_down(Centred* first, Centred* last) {
+    if (last - first == 1) return first->leaf;
+    Calc lo[2] = {first->c[0], first->c[1]}, hi[2] = {first->c[0], first->c[1]};
+    for (const Centred* i = first + 1; i != last; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        lo[k] = std::min(lo[k], i->c[k]);
+        hi[k] = std::max(hi[k], i->c[k]);
+      }
+    }
+    const int axis = (hi[0] - lo[0]) >= (hi[1] - lo[1]) ? 0 : 1;
+    Centred* mid = first + (last - first) / 2;
+    std::nth_element(first, mid, last, [axis](const Centred& a, const Centred& b) { return a.c[axis] < b.c[axis]; });
+    const std::int32_t left = build_top_down(first, mid), right = build_top_down(mid, last);
+    const std::int32_t parent = alloc_node();
+    Node& n = nodes_[parent];
+    n.child1 = left;
+    n.child2 = right;
+    n.box = merged(nodes_[left].box, nodes_[right].box);
+    n.height = 1 + std::max(nodes_[left].height, nodes_[right].height);
+    nodes_[left].parent = nodes_[right].parent = parent;
+    return parent;
   }
 
   ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {
