@@ -124,6 +124,7 @@ std::vector<bp::ProxyId> fill(B& s, const std::vector<collide::Aabb<float>>& box
   std::vector<bp::ProxyId> ids;
   ids.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) ids.push_back(s.add(boxes[i], i));
+  if constexpr (requires { s.flush(); }) s.flush();  // a batch of additions: sort once
   return ids;
 }
 

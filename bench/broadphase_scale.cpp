@@ -27,31 +27,26 @@ namespace bp = collide::broadphase;
 using V = collide::Vec2<float>;
 using Clock = std::chrono::steady_clock;
 
-std::vector<collide::Aabb<float>> spread_boxes(std::size_t n) {
-  std::mt19937 rng{static_cast<unsigned>(n)};
-  const float side = std::sqrt(2.0f * float(n));
-  std::uniform_real_distribution<float> pos(0, side), size(0.5f, 1.5f);
+/// n boxes with lower corners uniform in [0, extent)^2 and sides uniform in [lo, hi).
+std::vector<collide::Aabb<float>> random_boxes(std::size_t n, unsigned seed, float extent, float lo, float hi) {
+  std::mt19937 rng{seed};
+  std::uniform_real_distribution<float> pos(0, extent), size(lo, hi);
   std::vector<collide::Aabb<float>> out;
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const V lo(pos(rng), pos(rng));
-    out.emplace_back(lo, lo + V(size(rng), size(rng)));
+    const V corner(pos(rng), pos(rng));
+    out.emplace_back(corner, corner + V(size(rng), size(rng)));
   }
   return out;
 }
 
-/// Every box contains the square [0.5, 1]^2, so every two overlap.
-std::vector<collide::Aabb<float>> piled_boxes(std::size_t n) {
-  std::mt19937 rng{7};
-  std::uniform_real_distribution<float> pos(0, 0.5f), size(1.0f, 1.5f);
-  std::vector<collide::Aabb<float>> out;
-  out.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const V lo(pos(rng), pos(rng));
-    out.emplace_back(lo, lo + V(size(rng), size(rng)));
-  }
-  return out;
+/// About 2 overlaps per box.
+std::vector<collide::Aabb<float>> spread_boxes(std::size_t n) {
+  return random_boxes(n, static_cast<unsigned>(n), std::sqrt(2.0f * float(n)), 0.5f, 1.5f);
 }
+
+/// Every box contains the square [0.5, 1]^2, so every two overlap.
+std::vector<collide::Aabb<float>> piled_boxes(std::size_t n) { return random_boxes(n, 7, 0.5f, 1.0f, 1.5f); }
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 

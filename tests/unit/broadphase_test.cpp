@@ -4,6 +4,8 @@
 // edges of double's range, where the slab test's parameters underflow. Each structure must give
 // the exact answer for these boxes, not merely the same answer as the others.
 
+#include "broadphase_support.hpp"
+
 #include <collide/broadphase.hpp>
 
 #include <gtest/gtest.h>
@@ -58,29 +60,15 @@ TEST(BroadphaseRaycast, UnderflowingSlabParameterKeepsItsSignUniformGrid) {
   check_underflowing_slab(bp::UniformGrid<double>(1.0));
 }
 
+/// Tree margin 1 (wide on purpose: small moves stay inside the fat box), grid cell 1.
 template <class S>
-struct Make;
-template <class T>
-struct Make<bp::DynamicTree<T>> {
-  static bp::DynamicTree<T> make() { return bp::DynamicTree<T>(T(1)); }  // a wide margin on purpose
-};
-template <class T>
-struct Make<bp::SweepAndPrune<T>> {
-  static bp::SweepAndPrune<T> make() { return {}; }
-};
-template <class T>
-struct Make<bp::UniformGrid<T>> {
-  static bp::UniformGrid<T> make() { return bp::UniformGrid<T>(T(1)); }
-};
-
-template <class S>
-using ScalarOf = std::remove_cvref_t<decltype(std::declval<S>().box(bp::ProxyId{}).min().x())>;
+S make() {
+  return Make<S>::make(ScalarOf<S>(1), ScalarOf<S>(1));
+}
 
 template <class S>
 class BroadphaseUnit : public ::testing::Test {};
-using Structures = ::testing::Types<bp::DynamicTree<float>, bp::SweepAndPrune<float>, bp::UniformGrid<float>,
-                                    bp::DynamicTree<double>, bp::SweepAndPrune<double>, bp::UniformGrid<double>>;
-TYPED_TEST_SUITE(BroadphaseUnit, Structures);
+TYPED_TEST_SUITE(BroadphaseUnit, BroadphaseStructures);
 
 template <class T>
 Aabb<T> box(T x0, T y0, T x1, T y1) {
@@ -112,7 +100,7 @@ using U = std::vector<std::uint64_t>;
 
 TYPED_TEST(BroadphaseUnit, PairsAreTheOverlappingStoredBoxesTouchingIncluded) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   s.add(box<T>(0, 0, 1, 1), 0);
   s.add(box<T>(1, 0, 2, 1), 1);        // touches 0 along x = 1
   s.add(box<T>(T(2.5), 0, 3, 1), 2);   // 0.5 from 1: apart
@@ -124,7 +112,7 @@ TYPED_TEST(BroadphaseUnit, PairsAreTheOverlappingStoredBoxesTouchingIncluded) {
 
 TYPED_TEST(BroadphaseUnit, MoveStoresTheNewBoxEvenForASmallStep) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   const bp::ProxyId a = s.add(box<T>(0, 0, 1, 1), 0);
   s.add(box<T>(T(1.5), 0, T(2.5), 1), 1);
   EXPECT_EQ(user_pairs(s), UP{});
@@ -142,7 +130,7 @@ TYPED_TEST(BroadphaseUnit, MoveStoresTheNewBoxEvenForASmallStep) {
 
 TYPED_TEST(BroadphaseUnit, RemoveDropsThePairsAndTheHandle) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   const bp::ProxyId a = s.add(box<T>(0, 0, 1, 1), 0);
   const bp::ProxyId b = s.add(box<T>(T(0.5), 0, T(1.5), 1), 1);
   s.add(box<T>(1, 0, 2, 1), 2);
@@ -163,7 +151,7 @@ TYPED_TEST(BroadphaseUnit, RemoveDropsThePairsAndTheHandle) {
 /// other proxies through their handles: every answer against brute force over the stored boxes.
 TYPED_TEST(BroadphaseUnit, MovesAndRemovesThroughReorderedProxiesStayExact) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> coord(-40, 40), size(0, 6), pick(0, 199);
   std::vector<bp::ProxyId> ids;
@@ -215,7 +203,7 @@ TYPED_TEST(BroadphaseUnit, MovesAndRemovesThroughReorderedProxiesStayExact) {
 
 TYPED_TEST(BroadphaseUnit, FiltersDecidePairsQueriesAndRays) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   const bp::Filter player{1, 0xffffffffu ^ 1u}, bullet{2, 1}, wall{4, 3}, ghost{8, 0};
   s.add(box<T>(0, 0, 2, 2), 0, player);
   s.add(box<T>(1, 1, 3, 3), 1, bullet);
@@ -241,7 +229,7 @@ TYPED_TEST(BroadphaseUnit, FiltersDecidePairsQueriesAndRays) {
 
 TYPED_TEST(BroadphaseUnit, PointQueryAndClosestHit) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   s.add(box<T>(0, 0, 1, 1), 0);
   s.add(box<T>(2, 0, 3, 1), 1);
   s.add(box<T>(T(2.5), 0, 4, 1), 2);
@@ -260,7 +248,7 @@ TYPED_TEST(BroadphaseUnit, PointQueryAndClosestHit) {
 
 TYPED_TEST(BroadphaseUnit, ForEachPairStopsWhenAsked) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   for (int i = 0; i < 20; ++i) s.add(box<T>(0, 0, 1, 1), std::uint64_t(i));
   int seen = 0;
   s.for_each_pair([&](bp::ProxyId, bp::ProxyId) { return ++seen < 7; });

@@ -3,6 +3,8 @@
 // many threads querying one structure that nobody modifies get the single-threaded answers.
 // Also built with -fsanitize=thread by the broadphase_tsan test (tests/unit/broadphase_tsan).
 
+#include "broadphase_support.hpp"
+
 #include <collide/broadphase.hpp>
 
 #include <gtest/gtest.h>
@@ -18,29 +20,15 @@ namespace {
 
 namespace bp = collide::broadphase;
 
+/// Tree margin 0.25, grid cell 1.
 template <class S>
-struct Make;
-template <class T>
-struct Make<bp::DynamicTree<T>> {
-  static bp::DynamicTree<T> make() { return bp::DynamicTree<T>(T(0.25)); }
-};
-template <class T>
-struct Make<bp::SweepAndPrune<T>> {
-  static bp::SweepAndPrune<T> make() { return {}; }
-};
-template <class T>
-struct Make<bp::UniformGrid<T>> {
-  static bp::UniformGrid<T> make() { return bp::UniformGrid<T>(T(1)); }
-};
+S make() {
+  return Make<S>::make(ScalarOf<S>(0.25), ScalarOf<S>(1));
+}
 
 template <class S>
 class BroadphaseReentrant : public ::testing::Test {};
-using Structures = ::testing::Types<bp::DynamicTree<float>, bp::SweepAndPrune<float>, bp::UniformGrid<float>,
-                                    bp::DynamicTree<double>, bp::SweepAndPrune<double>, bp::UniformGrid<double>>;
-TYPED_TEST_SUITE(BroadphaseReentrant, Structures);
-
-template <class S>
-using ScalarOf = std::remove_cvref_t<decltype(std::declval<S>().box(bp::ProxyId{}).min().x())>;
+TYPED_TEST_SUITE(BroadphaseReentrant, BroadphaseStructures);
 
 /// A row of n unit boxes, each overlapping its neighbours by half (box i: x in [i/2, i/2 + 1]).
 template <class S>
@@ -57,7 +45,7 @@ int row_neighbours(int i, int n) { return std::min(n - 1, i + 2) - std::max(0, i
 TYPED_TEST(BroadphaseReentrant, QueryInsideQueryCallbackIsExact) {
   using T = ScalarOf<TypeParam>;
   const TypeParam s = [] {
-    TypeParam m = Make<TypeParam>::make();
+    TypeParam m = make<TypeParam>();
     add_row(m, 11);
     return m;
   }();
@@ -75,7 +63,7 @@ TYPED_TEST(BroadphaseReentrant, QueryInsideQueryCallbackIsExact) {
 
 TYPED_TEST(BroadphaseReentrant, RaycastAndQueryNestedBothWaysAreExact) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   add_row(s, 11);
   const TypeParam& c = s;
   // Raycast along the row; from each hit, a raycast and a query.
@@ -100,7 +88,7 @@ TYPED_TEST(BroadphaseReentrant, RaycastAndQueryNestedBothWaysAreExact) {
 
 TYPED_TEST(BroadphaseReentrant, QueryInsideAnotherStructuresCallbackIsExact) {
   using T = ScalarOf<TypeParam>;
-  TypeParam a = Make<TypeParam>::make(), b = Make<TypeParam>::make();
+  TypeParam a = make<TypeParam>(), b = make<TypeParam>();
   add_row(a, 11);
   add_row(b, 11);
   int inner = 0;
@@ -133,7 +121,7 @@ std::vector<std::uint64_t> answers(const S& s, const std::vector<Aabb<ScalarOf<S
 
 TYPED_TEST(BroadphaseReentrant, ManyThreadsQueryingGetTheSingleThreadedAnswers) {
   using T = ScalarOf<TypeParam>;
-  TypeParam s = Make<TypeParam>::make();
+  TypeParam s = make<TypeParam>();
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> pos(0, 40), size(0.2f, 2.0f);
   std::vector<bp::ProxyId> ids;

@@ -52,6 +52,7 @@ class BroadphaseError : public std::invalid_argument {
  public:
   BroadphaseError(BroadphaseErrc code, std::string_view what)
       : std::invalid_argument(std::string(name(code)) + ": " + std::string(what)), code_(code) {}
+  /// Why the call was refused.
   BroadphaseErrc code() const noexcept { return code_; }
 
  private:
@@ -121,6 +122,7 @@ inline bool box_contains(const Box<T>& outer, const Box<T>& inner) noexcept {
          inner.max.x() <= outer.max.x() && inner.max.y() <= outer.max.y();
 }
 
+/// The corners of a validated box.
 template <Scalar T>
 inline Box<T> box_of(const Aabb<T>& a) noexcept {
   return {a.min(), a.max()};
@@ -229,6 +231,7 @@ inline T checked_margin(T margin) {
 template <Scalar T, class Extra>
 class Slots {
  public:
+  /// One proxy's record.
   struct Slot {
     Box<T> box{};
     std::uint64_t user = 0;
@@ -244,9 +247,11 @@ class Slots {
       throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");
     return id.index;
   }
+  /// True when id names a live slot of this table.
   bool contains(ProxyId id) const noexcept {
     return id.index < slots_.size() && slots_[id.index].live && slots_[id.index].generation == id.generation;
   }
+  /// Takes a free slot (or a new one) for a proxy. Errors: TooManyProxies.
   ProxyId allocate(const Box<T>& box, std::uint64_t user, Filter filter) {
     std::uint32_t i;
     if (!free_.empty()) {
@@ -267,6 +272,7 @@ class Slots {
     ++live_;
     return {i, s.generation};
   }
+  /// Frees slot i; its handle becomes stale.
   void release(std::uint32_t i) {
     slots_[i].live = false;
     ++slots_[i].generation;  // wraps after 2^32 reuses of one slot; a stale handle that old is not detected
@@ -275,11 +281,17 @@ class Slots {
   }
   /// Reserves room for n slots in all.
   void reserve(std::size_t n) { slots_.reserve(n); }
+  /// Slot i (unchecked).
   Slot& operator[](std::uint32_t i) noexcept { return slots_[i]; }
+  /// Slot i (unchecked).
   const Slot& operator[](std::uint32_t i) const noexcept { return slots_[i]; }
+  /// The current handle of slot i.
   ProxyId id(std::uint32_t i) const noexcept { return {i, slots_[i].generation}; }
+  /// Number of slots, live or free.
   std::size_t capacity() const noexcept { return slots_.size(); }
+  /// Number of live slots.
   std::size_t size() const noexcept { return live_; }
+  /// Drops every slot.
   void clear() {
     slots_.clear();
     free_.clear();
@@ -302,6 +314,7 @@ inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
 template <class V, std::size_t kInline = 128>
 class LocalStack {
  public:
+  /// Pushes v (on the heap only beyond kInline entries).
   void push(const V& v) {
     if (n_ < kInline) {
       inline_[n_] = v;
@@ -310,6 +323,7 @@ class LocalStack {
     }
     ++n_;
   }
+  /// Removes and returns the top entry (the stack must not be empty).
   V pop() {
     --n_;
     if (n_ < kInline) return inline_[n_];
@@ -317,6 +331,7 @@ class LocalStack {
     heap_.pop_back();
     return v;
   }
+  /// True when nothing is on the stack.
   bool empty() const noexcept { return n_ == 0; }
 
  private:

@@ -74,6 +74,7 @@ class PairTracker {
   /// Reports into out (cleared first) the pairs that began and ended since the last update, each
   /// once, in no particular order. Allocates only while its buffers grow.
   void update(PairEvents& out) {
+    if constexpr (requires { bp_.flush(); }) bp_.flush();
     out.clear();
     out.ended.swap(pending_ended_);
     std::sort(changed_.begin(), changed_.end());

@@ -52,51 +52,27 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
   }
 
   /// Calls f(ProxyId a, ProxyId b) once for every pair of proxies whose boxes overlap (closed) and
-  /// whose filters accept each other; f may return bool, false stops. Builds no list.
+  /// whose filters accept each other; f may return bool, false stops. Builds no list of pairs;
+  /// while additions are pending (see flush()) it sweeps a sorted copy of the entries.
   template <class F>
   void for_each_pair(F&& f) const {
-    const std::size_t n = entries_.size();
-    const auto report = [&](const Entry& a, const Entry& b) {
-      const auto &sa = slots_[a.slot], &sb = slots_[b.slot];
-      if (b.min_y <= a.max_y && a.min_y <= b.max_y && accepts(sa.filter, sb.filter))
-        return call_continue(f, slots_.id(a.slot), slots_.id(b.slot));
-      return true;
-    };
-    // Sweep the sorted part.
-    for (std::size_t i = 0; i < sorted_; ++i) {
-      const Entry& a = entries_[i];
-      if (a.slot == kDead) continue;
-      for (std::size_t j = i + 1; j < sorted_; ++j) {
-        const Entry& b = entries_[j];
-#if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 1
-        // Planted fault 1 (tests only): stops at touching x intervals, so touching pairs are lost.
-        if (b.min_x >= a.max_x) break;
-#else
-        if (b.min_x > a.max_x) break;
-#endif
-        if (b.slot != kDead && !report(a, b)) return;
-      }
+    if (sorted_ == entries_.size()) {
+      sweep_pairs(entries_.data(), entries_.size(), f);
+      return;
     }
-    // Each tail entry against the sorted part and the later tail entries.
-    for (std::size_t i = sorted_; i < n; ++i) {
-      const Entry& a = entries_[i];
-      if (a.slot == kDead) continue;
-      bool go = true;
-      visit_range(Vec2c(a.min_x, a.min_y), Vec2c(a.max_x, a.max_y), [&](const Entry& b) {
-        const std::size_t j = std::size_t(&b - entries_.data());
-        if (j >= sorted_ && j <= i) return true;  // tail pairs are found from the earlier entry
-        if (a.min_x <= b.max_x && b.min_x <= a.max_x) go = report(a, b);
-        return go;
-      });
-      if (!go) return;
-    }
+    std::vector<Entry> all(entries_.begin(), entries_.end());
+    const auto mid = all.begin() + std::ptrdiff_t(sorted_);
+    std::sort(mid, all.end(), by_min_x);
+    std::inplace_merge(all.begin(), mid, all.end(), by_min_x);
+    sweep_pairs(all.data(), all.size(), f);
   }
 
   /// Merges the tail of recent additions and drops removed entries, so that queries scan only
-  /// the sorted array. Optional: every query is correct without it; call it after a large batch
-  /// of additions when queries should be as fast as possible.
+  /// the sorted array. Optional: every query is correct without it, but until then each query
+  /// also scans the pending additions (up to an eighth of the proxies); call it after a batch of
+  /// additions. PairTracker::update() calls it.
   void flush() {
-    compact();
+    if (dead_ > 0) compact();
     merge_tail();
   }
 
@@ -144,9 +120,8 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
       return;
     }
     // Shift the entry to its place in the sorted part, or send it to the tail if that is far.
-    const auto less = [](const Entry& x, const Entry& y) { return x.min_x < y.min_x; };
     const std::size_t target = std::size_t(
-        std::lower_bound(entries_.begin(), entries_.begin() + std::ptrdiff_t(sorted_), e, less) - entries_.begin());
+        std::lower_bound(entries_.begin(), entries_.begin() + std::ptrdiff_t(sorted_), e, by_min_x) - entries_.begin());
     if ((target > p ? target - p : p - target) > kMaxShift) {
       entries_[p].slot = kDead;
       ++dead_;
@@ -157,6 +132,29 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
     while (p > 0 && e.min_x < entries_[p - 1].min_x) place(p, entries_[p - 1]), --p;
     while (p + 1 < sorted_ && entries_[p + 1].min_x < e.min_x) place(p, entries_[p + 1]), ++p;
     place(p, e);
+  }
+
+  static bool by_min_x(const Entry& x, const Entry& y) noexcept { return x.min_x < y.min_x; }
+
+  /// The sweep over n entries sorted by min_x (dead entries skipped).
+  template <class F>
+  void sweep_pairs(const Entry* e, std::size_t n, F& f) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Entry& a = e[i];
+      if (a.slot == kDead) continue;
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const Entry& b = e[j];
+#if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 1
+        // Planted fault 1 (tests only): stops at touching x intervals, so touching pairs are lost.
+        if (b.min_x >= a.max_x) break;
+#else
+        if (b.min_x > a.max_x) break;
+#endif
+        if (b.slot == kDead || b.min_y > a.max_y || a.min_y > b.max_y) continue;
+        if (!accepts(slots_[a.slot].filter, slots_[b.slot].filter)) continue;
+        if (!call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
+      }
+    }
   }
 
   static Entry entry_of(const Box<T>& b, std::uint32_t slot) noexcept {
@@ -196,10 +194,9 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
   /// Sorts the tail and merges it into the sorted part.
   void merge_tail() {
     if (sorted_ == entries_.size()) return;
-    const auto less = [](const Entry& x, const Entry& y) { return x.min_x < y.min_x; };
     const auto mid = entries_.begin() + std::ptrdiff_t(sorted_);
-    std::sort(mid, entries_.end(), less);
-    std::inplace_merge(entries_.begin(), mid, entries_.end(), less);
+    std::sort(mid, entries_.end(), by_min_x);
+    std::inplace_merge(entries_.begin(), mid, entries_.end(), by_min_x);
     for (std::size_t i = 0; i < entries_.size(); ++i) place(i, entries_[i]);
     sorted_ = entries_.size();
   }
