@@ -279,9 +279,14 @@ TEST(BroadphaseTreeBoxes, FatBoxKeptForSmallMovesAndRebuiltForLargeOnes) {
   t.move(a, box<double>(0.5, 0.5, 1.5, 1.5));  // inside the fat box: kept
   EXPECT_EQ(t.fat_box(a).min(), Vec2<double>(-1, -1));
   EXPECT_EQ(t.box(a).min(), Vec2<double>(0.5, 0.5));
-  t.move(a, box<double>(5, 5, 6, 6));  // outside: refattened around the new box
+  t.move(a, box<double>(5, 5, 6, 6));  // outside: refattened around the new box, stretched ahead
   EXPECT_EQ(t.fat_box(a).min(), Vec2<double>(4, 4));
-  EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(7, 7));
+  EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(9, 9));  // 4 x 4.5 ahead, capped at extent + margin
+  t.move(a, box<double>(5.25, 4.5, 6.25, 5.5));   // still inside
+  EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(9, 9));
+  t.move(a, box<double>(4.5, 2.75, 5.5, 3.75));  // leaves it down and left: stretched that way
+  EXPECT_EQ(t.fat_box(a).min(), Vec2<double>(1.5, -0.25));  // 4 x (-0.75, -1.75), capped at -2
+  EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(6.5, 4.75));
   EXPECT_TRUE(t.check_invariants());
 }
 

@@ -390,6 +390,13 @@ class ProxyOps {
   std::uint64_t user_data(ProxyId id) const { return self().slots_[self().slots_.check(id)].user; }
   /// Errors: InvalidProxy.
   Filter filter(ProxyId id) const { return self().slots_[self().slots_.check(id)].filter; }
+  /// True when the stored boxes of a and b overlap (closed) and their filters accept each other:
+  /// whether pairs() lists (a, b). Errors: InvalidProxy.
+  bool overlap(ProxyId a, ProxyId b) const {
+    const auto& sa = self().slots_[self().slots_.check(a)];
+    const auto& sb = self().slots_[self().slots_.check(b)];
+    return boxes_overlap(sa.box, sb.box) && accepts(sa.filter, sb.filter);
+  }
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the ray (t in units of
   /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside) and whose
   /// filter accepts `filter`. f may return bool; false stops. Errors: BadRay.

@@ -8,6 +8,7 @@
 #include "collide/broadphase/common.hpp"
 
 #include <algorithm>
+#include <concepts>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -45,12 +46,17 @@ class PairTracker {
     grow(id.index);
     ids_[id.index] = id;
     partners_[id.index].clear();
+    if constexpr (kFat) refat_[id.index] = 1;
     mark(id.index);
     return id;
   }
   /// Moves a proxy; its pairs are re-examined at the next update. Errors: InvalidProxy.
   void move(ProxyId id, const Aabb<T>& box) {
-    bp_.move(id, box);
+    if constexpr (kFat) {
+      if (bp_.move_fat(id, box)) refat_[id.index] = 1;
+    } else {
+      bp_.move(id, box);
+    }
     mark(id.index);
   }
   /// Replaces a proxy's filter; its pairs are re-examined at the next update. Errors: InvalidProxy.
@@ -69,6 +75,11 @@ class PairTracker {
       erase_sorted(partners_[other], id.index);
     }
     partners_[id.index].clear();
+    if constexpr (kFat) {
+      for (const std::uint32_t other : near_[id.index]) erase_sorted(near_[other], id.index);
+      near_[id.index].clear();
+      refat_[id.index] = 0;
+    }
   }
 
   /// Reports into out (cleared first) the pairs that began and ended since the last update, each
@@ -78,12 +89,19 @@ class PairTracker {
     out.clear();
     out.ended.swap(pending_ended_);
     std::sort(changed_.begin(), changed_.end());
+    if constexpr (kFat) refresh_fat_neighbours();
     for (const std::uint32_t i : changed_) {
       const ProxyId id = ids_[i];
       if (!bp_.contains(id)) continue;  // removed since
       found_.clear();
-      bp_.query(bp_.box(id), [&](ProxyId o) { if (o.index != i) found_.push_back(o.index); }, bp_.filter(id));
-      std::sort(found_.begin(), found_.end());
+      if constexpr (kFat) {
+        // Stored boxes that meet are inside fat boxes that meet: the neighbours hold every partner.
+        for (const std::uint32_t o : near_[i])
+          if (bp_.overlap(id, ids_[o])) found_.push_back(o);
+      } else {
+        bp_.query(bp_.box(id), [&](ProxyId o) { if (o.index != i) found_.push_back(o.index); }, bp_.filter(id));
+        std::sort(found_.begin(), found_.end());
+      }
       diff(i, out);
       partners_[i].assign(found_.begin(), found_.end());
     }
@@ -107,11 +125,45 @@ class PairTracker {
   const BP& structure() const noexcept { return bp_; }
 
  private:
+  /// The structure keeps fat boxes and can tell who left theirs (DynamicTree).
+  static constexpr bool kFat = requires(BP& b, const BP& cb, ProxyId id, const Aabb<T>& box) {
+    { b.move_fat(id, box) } -> std::same_as<bool>;
+    cb.query_fat(id, [](ProxyId) {});
+  };
+
   void grow(std::uint32_t i) {
     if (i >= ids_.size()) {
       ids_.resize(std::size_t(i) + 1);
       partners_.resize(std::size_t(i) + 1);
       changed_mark_.resize(std::size_t(i) + 1, 0);
+      if constexpr (kFat) {
+        near_.resize(std::size_t(i) + 1);
+        refat_.resize(std::size_t(i) + 1, 0);
+      }
+    }
+  }
+
+  /// Re-queries the fat-box neighbours of every proxy that got a new fat box, on both sides.
+  /// Runs before any pair is decided, so every neighbour list is current when it is read.
+  void refresh_fat_neighbours() {
+    for (const std::uint32_t i : changed_) {
+      if (!refat_[i] || !bp_.contains(ids_[i])) continue;
+      refat_[i] = 0;
+      found_.clear();
+      bp_.query_fat(ids_[i], [&](ProxyId o) { found_.push_back(o.index); });
+      std::sort(found_.begin(), found_.end());
+      const std::vector<std::uint32_t>& was = near_[i];
+      std::size_t a = 0, b = 0;
+      while (a < found_.size() || b < was.size()) {
+        if (b == was.size() || (a < found_.size() && found_[a] < was[b])) {
+          insert_sorted(near_[found_[a++]], i);
+        } else if (a == found_.size() || was[b] < found_[a]) {
+          erase_sorted(near_[was[b++]], i);
+        } else {
+          ++a, ++b;
+        }
+      }
+      near_[i].assign(found_.begin(), found_.end());
     }
   }
   void mark(std::uint32_t i) {
@@ -160,6 +212,8 @@ class PairTracker {
   std::vector<char> changed_mark_;
   std::vector<std::uint32_t> found_;                  ///< scratch: partners now
   std::vector<ProxyPair> pending_ended_;              ///< pairs ended by removals
+  std::vector<std::vector<std::uint32_t>> near_;      ///< DynamicTree only: sorted fat-box neighbours
+  std::vector<char> refat_;                           ///< DynamicTree only: got a new fat box since
 };
 
 }  // namespace collide::broadphase

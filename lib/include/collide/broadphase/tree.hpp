@@ -1,12 +1,14 @@
 #pragma once
 /// @file broadphase/tree.hpp
-/// Dynamic AABB tree: leaves hold fattened boxes so small moves cost nothing, inner nodes the union
+/// Dynamic AABB tree: leaves hold fattened boxes (stretched ahead along the last displacement
+/// when a move leaves them) so small moves cost nothing, inner nodes the union
 /// of their children; insertion descends by the smallest perimeter growth and every node on the
 /// path back up whose children's heights differ by 2 or more is rotated (the taller child moves up).
 
 #include "collide/broadphase/common.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -56,6 +58,20 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     root_ = build_top_down(leaves.data(), leaves.data() + leaves.size());
     nodes_[root_].parent = -1;
     return ids;
+  }
+
+  /// Moves like move() and tells whether the proxy left its fat box (and got a new one), so that
+  /// a caller caching fat-box neighbours (PairTracker) knows whose to refresh. Errors: InvalidProxy.
+  bool move_fat(ProxyId id, const Aabb<T>& box) { return move_box(id, box_of(box)); }
+
+  /// Calls f(ProxyId) for every other proxy whose fat box meets id's fat box (closed): a superset
+  /// of the proxies whose stored boxes meet id's. Errors: InvalidProxy.
+  template <class F>
+  void query_fat(ProxyId id, F&& f) const {
+    const std::uint32_t self = slots_.check(id);
+    const Box<T> fat = nodes_[slots_[self].extra.leaf].box;
+    visit([&](const Box<T>& b) { return boxes_overlap(b, fat); },
+          [&](std::uint32_t s) { return s == self || call_continue(f, slots_.id(s)); });
   }
 
   /// Fat box of a proxy (contains box(id)). Errors: InvalidProxy.
@@ -251,14 +267,33 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return id;
   }
 
-  void move_box(ProxyId id, const Box<T>& b) {
+  /// Returns true when the leaf was reinserted with a new fat box.
+  bool move_box(ProxyId id, const Box<T>& b) {
     const std::uint32_t s = slots_.check(id);
+    const Box<T> old = slots_[s].box;
     slots_[s].box = b;
     const std::int32_t leaf = slots_[s].extra.leaf;
-    if (box_contains(nodes_[leaf].box, b)) return;
+    if (box_contains(nodes_[leaf].box, b)) return false;
     remove_leaf(leaf);
-    nodes_[leaf].box = fattened(b, margin_);
+    nodes_[leaf].box = predicted(b, old);
     insert_leaf(leaf);
+    return true;
+  }
+
+  /// The fat box of a proxy that moved from `old` to `b`: grown by the margin, then stretched
+  /// kLookAhead steps of the same displacement ahead (at most the box's extent plus the margin
+  /// per axis, so a teleport does not leave a huge box), so that steady motion leaves it rarely.
+  Box<T> predicted(const Box<T>& b, const Box<T>& old) const noexcept {
+    Box<T> fat = fattened(b, margin_);
+    for (int i = 0; i < 2; ++i) {
+      const Calc cap = Calc(b.max[i]) - Calc(b.min[i]) + Calc(margin_);
+      const Calc ahead = std::clamp(kLookAhead * (Calc(b.min[i]) - Calc(old.min[i])), -cap, cap);
+      const T moved = T(ahead < 0 ? Calc(fat.min[i]) + ahead : Calc(fat.max[i]) + ahead);
+      if (!(std::fabs(moved) <= max_magnitude<T>())) continue;  // keep the plain fat box
+      if (ahead < 0) fat.min[i] = std::min(fat.min[i], moved);
+      if (ahead > 0) fat.max[i] = std::max(fat.max[i], moved);
+    }
+    return fat;
   }
 
   std::int32_t alloc_node() {
@@ -392,6 +427,9 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     U.height = 1 + std::max(A.height, nodes_[keep].height);
     return up;
   }
+
+  /// How many steps of the last displacement a reinserted fat box reaches ahead.
+  static constexpr Calc kLookAhead = 4;
 
   T margin_;
   Slots<T, Extra> slots_;
