@@ -88,7 +88,6 @@ class PairTracker {
     if constexpr (requires { bp_.flush(); }) bp_.flush();
     out.clear();
     out.ended.swap(pending_ended_);
-    std::sort(changed_.begin(), changed_.end());
     if constexpr (kFat) refresh_fat_neighbours();
     for (const std::uint32_t i : changed_) {
       const ProxyId id = ids_[i];
@@ -104,6 +103,7 @@ class PairTracker {
       }
       diff(i, out);
       partners_[i].assign(found_.begin(), found_.end());
+      changed_mark_[i] = kSettled;
     }
     for (const std::uint32_t i : changed_) changed_mark_[i] = 0;
     changed_.clear();
@@ -166,9 +166,12 @@ class PairTracker {
       near_[i].assign(found_.begin(), found_.end());
     }
   }
+  /// changed_mark_ values: not changed, changed, changed and handled in the running update.
+  static constexpr char kChanged = 1, kSettled = 2;
+
   void mark(std::uint32_t i) {
     if (!changed_mark_[i]) {
-      changed_mark_[i] = 1;
+      changed_mark_[i] = kChanged;
       changed_.push_back(i);
     }
   }
@@ -182,12 +185,12 @@ class PairTracker {
   }
 
   /// Compares found_ (partners now) with partners_[i] (at the last update), both sorted, and
-  /// reports the difference. A partner changed too and lower in index has already settled this
-  /// pair from its side.
+  /// reports the difference. A partner that changed too and was handled earlier in this update
+  /// has already settled this pair from its side.
   void diff(std::uint32_t i, PairEvents& out) {
     const std::vector<std::uint32_t>& was = partners_[i];
     std::size_t a = 0, b = 0;
-    const auto settled = [&](std::uint32_t o) { return changed_mark_[o] && o < i; };
+    const auto settled = [&](std::uint32_t o) { return changed_mark_[o] == kSettled; };
     while (a < found_.size() || b < was.size()) {
       if (b == was.size() || (a < found_.size() && found_[a] < was[b])) {
         const std::uint32_t o = found_[a++];
