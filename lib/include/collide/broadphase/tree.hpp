@@ -288,8 +288,9 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     for (int i = 0; i < 2; ++i) {
       const Calc cap = Calc(b.max[i]) - Calc(b.min[i]) + Calc(margin_);
       const Calc ahead = std::clamp(kLookAhead * (Calc(b.min[i]) - Calc(old.min[i])), -cap, cap);
-      const T moved = T(ahead < 0 ? Calc(fat.min[i]) + ahead : Calc(fat.max[i]) + ahead);
-      if (!(std::fabs(moved) <= max_magnitude<T>())) continue;  // keep the plain fat box
+      const Calc reach = ahead < 0 ? Calc(fat.min[i]) + ahead : Calc(fat.max[i]) + ahead;
+      if (!(std::fabs(reach) <= Calc(max_magnitude<T>()))) continue;  // keep the plain fat box
+      const T moved = T(reach);
       if (ahead < 0) fat.min[i] = std::min(fat.min[i], moved);
       if (ahead > 0) fat.max[i] = std::max(fat.max[i], moved);
     }
