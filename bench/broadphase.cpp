@@ -1,6 +1,8 @@
 // Broadphase benchmarks: N boxes (each overlapping about 2 others): build, all pairs, and move
 // 10% then find the pairs of the moved boxes; collide's three structures against Box2D's
-// b2DynamicTree (queried once per box) and brute force (N <= 10k).
+// b2DynamicTree (queried once per box) and brute force (N <= 10k). Pair events: every box moves
+// every frame, then one update reports the pairs that began and ended (PairTracker) against
+// Box2D's b2BroadPhase (MoveProxy for every box, then UpdatePairs over its move buffer).
 
 #include "collide/broadphase.hpp"
 #include "suites.hpp"
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <random>
 #include <string>
@@ -121,6 +124,7 @@ std::vector<bp::ProxyId> fill(B& s, const std::vector<collide::Aabb<float>>& box
   std::vector<bp::ProxyId> ids;
   ids.reserve(boxes.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) ids.push_back(s.add(boxes[i], i));
+  if constexpr (requires { s.flush(); }) s.flush();  // a batch of additions: sort once
   return ids;
 }
 
@@ -175,6 +179,122 @@ void register_structure(const std::string& label, const std::shared_ptr<World>& 
   })->Unit(benchmark::kMillisecond);
 }
 
+/// Box i at frame f of the moving scene: its start box shifted by its velocity times a triangle
+/// wave of period 128 frames (so the scene stays in place however long the benchmark runs).
+collide::Aabb<float> box_at(const World& w, const std::vector<V>& velocity, std::size_t i, std::uint32_t frame) {
+  const std::uint32_t phase = frame % 128;
+  const float s = float(phase < 64 ? phase : 128 - phase);
+  const V d = velocity[i] * s;
+  return {w.boxes[i].min() + d, w.boxes[i].max() + d};
+}
+
+std::shared_ptr<std::vector<V>> make_velocities(std::size_t n) {
+  auto v = std::make_shared<std::vector<V>>();
+  std::mt19937 rng{static_cast<unsigned>(n) + 1};
+  std::uniform_real_distribution<float> speed(-0.05f, 0.05f);  // units per frame: Box2D's margin is 0.1
+  for (std::size_t i = 0; i < n; ++i) v->emplace_back(speed(rng), speed(rng));
+  return v;
+}
+
+/// Box2D 2.4.1's broadphase as its contact manager drives it: MoveProxy with the displacement
+/// for every box, then UpdatePairs, which reports the pairs of the proxies that left their fat
+/// boxes (AddPair here only counts them).
+struct Box2dBroadPhase {
+  b2BroadPhase bp;
+  std::vector<int32> proxy;
+  std::size_t added = 0;
+  void AddPair(void*, void*) { ++added; }
+};
+
+template <class B>
+void register_events(const std::string& label, const std::shared_ptr<World>& w,
+                     const std::shared_ptr<std::vector<V>>& vel) {
+  const std::string n = std::to_string(w->boxes.size());
+  benchmark::RegisterBenchmark(("broadphase/events/" + label + "/" + n).c_str(), [w, vel](benchmark::State& st) {
+    bp::PairTracker<B, float> t(make_structure<B>());
+    std::vector<bp::ProxyId> ids;
+    for (std::size_t i = 0; i < w->boxes.size(); ++i) ids.push_back(t.add(w->boxes[i], i));
+    bp::PairEvents e;
+    t.update(e);
+    std::uint32_t frame = 0;
+    std::size_t events = 0;
+    for (auto _ : st) {
+      ++frame;
+      for (std::size_t i = 0; i < ids.size(); ++i) t.move(ids[i], box_at(*w, *vel, i, frame));
+      t.update(e);
+      events += e.began.size() + e.ended.size();
+    }
+    st.counters["boxes"] = double(w->boxes.size());
+    st.counters["events_per_frame"] = double(events) / double(std::max<std::uint32_t>(frame, 1));
+  })->Unit(benchmark::kMillisecond);
+}
+
+void register_box2d_events(const std::shared_ptr<World>& w, const std::shared_ptr<std::vector<V>>& vel) {
+  const std::string n = std::to_string(w->boxes.size());
+  benchmark::RegisterBenchmark(("broadphase/events/box2d_broadphase/" + n).c_str(), [w, vel](benchmark::State& st) {
+    Box2dBroadPhase b;
+    for (std::size_t i = 0; i < w->boxes.size(); ++i)
+      b.proxy.push_back(b.bp.CreateProxy(to_b2(w->boxes[i]), reinterpret_cast<void*>(i)));
+    b.bp.UpdatePairs(&b);
+    std::uint32_t frame = 0;
+    std::size_t pairs = 0;
+    for (auto _ : st) {
+      ++frame;
+      for (std::size_t i = 0; i < b.proxy.size(); ++i) {
+        const b2AABB a = to_b2(box_at(*w, *vel, i, frame));
+        const b2AABB was = to_b2(box_at(*w, *vel, i, frame - 1));
+        b.bp.MoveProxy(b.proxy[i], a, a.lowerBound - was.lowerBound);
+      }
+      b.added = 0;
+      b.bp.UpdatePairs(&b);
+      pairs += b.added;
+    }
+    st.counters["boxes"] = double(w->boxes.size());
+    st.counters["pairs_per_frame"] = double(pairs) / double(std::max<std::uint32_t>(frame, 1));
+  })->Unit(benchmark::kMillisecond);
+}
+
+/// Cross-check of the pair events: over 200 frames of the moving scene, the pairs current after
+/// applying each frame's began and ended to the previous set equal brute force at that frame.
+bool check_events(const World& w, const std::vector<V>& vel) {
+  bp::PairTracker<bp::DynamicTree<float>, float> t(make_structure<bp::DynamicTree<float>>());
+  bp::PairTracker<bp::SweepAndPrune<float>, float> s;
+  std::vector<bp::ProxyId> ti, si;
+  for (std::size_t i = 0; i < w.boxes.size(); ++i) ti.push_back(t.add(w.boxes[i], i)), si.push_back(s.add(w.boxes[i], i));
+  std::vector<Pair> current_t, current_s;
+  bool ok = true;
+  const auto apply = [](auto& tracker, std::vector<Pair>& current) {
+    const bp::PairEvents e = tracker.update();
+    // No proxy is removed, so slot index == box index.
+    const auto key = [](const bp::ProxyPair& p) { return Pair(p.a.index, p.b.index); };
+    std::vector<Pair> ended;
+    for (const auto& p : e.ended) ended.push_back(key(p));
+    std::sort(ended.begin(), ended.end());
+    std::vector<Pair> kept;
+    std::set_difference(current.begin(), current.end(), ended.begin(), ended.end(), std::back_inserter(kept));
+    const bool all_ended_known = kept.size() + ended.size() == current.size();
+    for (const auto& p : e.began) kept.push_back(key(p));
+    std::sort(kept.begin(), kept.end());
+    current = kept;
+    return all_ended_known;
+  };
+  ok = apply(t, current_t) && apply(s, current_s);
+  for (std::uint32_t f = 1; f <= 200 && ok; ++f) {
+    std::vector<collide::Aabb<float>> now;
+    for (std::size_t i = 0; i < w.boxes.size(); ++i) {
+      now.push_back(box_at(w, vel, i, f));
+      t.move(ti[i], now.back());
+      s.move(si[i], now.back());
+    }
+    ok = apply(t, current_t) && apply(s, current_s);
+    if (f % 50 == 0 || f == 1) ok = ok && current_t == brute(now) && current_s == current_t;
+    else ok = ok && current_s == current_t;
+  }
+  std::printf("check broadphase events N=%-6zu 200 frames, pairs at the end %zu  %s\n", w.boxes.size(),
+              current_t.size(), ok ? "OK" : "MISMATCH");
+  return ok;
+}
+
 /// Cross-check: all structures and Box2D report the same pairs, before and after the move.
 bool check_world(const World& w) {
   bool ok = true;
@@ -187,7 +307,11 @@ bool check_world(const World& w) {
   std::vector<Pair> b2p;
   b2.all_pairs(b2p);
   std::sort(b2p.begin(), b2p.end());
+  bp::DynamicTree<float> batch(0.1f);
+  batch.add_batch(w.boxes);
+  ok = ok && batch.check_invariants();
   const auto t = as_pairs(tree, tree.pairs());
+  ok = ok && t == as_pairs(batch, batch.pairs());
   ok = ok && t == as_pairs(sweep, sweep.pairs()) && t == as_pairs(grid, grid.pairs()) && t == b2p;
   if (w.boxes.size() <= 10000) ok = ok && t == brute(w.boxes);
   // Move 10% and compare the pairs of the moved boxes.
@@ -223,8 +347,25 @@ bool register_broadphase() {
     const auto w = make_world(n);
     ok = check_world(*w) && ok;
     register_structure<bp::DynamicTree<float>>("tree", w);
+    benchmark::RegisterBenchmark(("broadphase/build/tree_batch/" + std::to_string(n)).c_str(),
+                                 [w](benchmark::State& st) {
+                                   for (auto _ : st) {
+                                     bp::DynamicTree<float> t(0.1f);
+                                     benchmark::DoNotOptimize(t.add_batch(w->boxes).data());
+                                   }
+                                   st.counters["boxes"] = double(w->boxes.size());
+                                 })
+        ->Unit(benchmark::kMillisecond);
     register_structure<bp::SweepAndPrune<float>>("sweep", w);
     register_structure<bp::UniformGrid<float>>("grid", w);
+    if (n >= 10000) {
+      const auto vel = make_velocities(n);
+      if (n == 10000) ok = check_events(*w, *vel) && ok;
+      register_events<bp::DynamicTree<float>>("tree", w, vel);
+      register_events<bp::SweepAndPrune<float>>("sweep", w, vel);
+      register_events<bp::UniformGrid<float>>("grid", w, vel);
+      register_box2d_events(w, vel);
+    }
     const std::string ns = std::to_string(n);
     benchmark::RegisterBenchmark(("broadphase/build/box2d_tree/" + ns).c_str(), [w](benchmark::State& st) {
       for (auto _ : st) {

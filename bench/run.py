@@ -2,7 +2,7 @@
 """Builds collide_bench (Release), runs it with repetitions, prints the collide/Box2D ratio table
 and writes build/reports/bench.json. Every ratio comes from one run of one binary.
 
-Usage: bench/run.py [--build-dir D] [--repetitions R] [--min-time S] [--filter REGEX]
+Usage: bench/run.py [--build-dir D] [--repetitions R] [--min-time S] [--filter REGEX] [--scale]
 Figures are medians over the repetitions of CPU time per pair (or per box); on a shared 2-core
 machine they are noisy (+-20% or worse while others compile).
 """
@@ -70,7 +70,14 @@ def main():
     ap.add_argument("--repetitions", type=int, default=3)
     ap.add_argument("--min-time", type=float, default=0.05, help="seconds per repetition per benchmark")
     ap.add_argument("--filter", default="", help="benchmark name regex (default: all)")
+    ap.add_argument("--scale", action="store_true",
+                    help="only the broadphase scale and bad-load program (1M boxes; 10k all overlapping)")
     args = ap.parse_args()
+    if args.scale:
+        subprocess.run(["cmake", "--build", os.path.abspath(args.build_dir), "--target", "collide_broadphase_scale",
+                        "-j2"], cwd=ROOT, check=True)
+        exe = os.path.join(os.path.abspath(args.build_dir), "bench", "collide_broadphase_scale")
+        sys.exit(subprocess.run([exe]).returncode)
     build_dir = os.path.abspath(args.build_dir)
     exe = build(build_dir)
     reports = os.path.join(ROOT, "build", "reports")
@@ -97,12 +104,24 @@ def main():
     for n in sizes:
         for op in ("build", "pairs", "move10"):
             row = {"n": n, "op": op}
-            for impl in ("tree", "sweep", "grid", "box2d_tree", "brute"):
+            for impl in ("tree", "sweep", "grid", "box2d_tree", "brute", "tree_batch"):
                 row[impl + "_ns_per_box"] = m.get("broadphase/%s/%s/%d" % (op, impl, n))
             b2 = row["box2d_tree_ns_per_box"]
-            for impl in ("tree", "sweep", "grid"):
+            for impl in ("tree", "sweep", "grid", "tree_batch"):
                 row["box2d_over_" + impl] = ratio(b2, row[impl + "_ns_per_box"])
             broad.append(row)
+    # Pair events per frame (every box moves): collide's PairTracker over each structure against
+    # Box2D's b2BroadPhase (MoveProxy + UpdatePairs); ratio = collide / Box2D, < 1 is faster.
+    events = []
+    for n in sizes:
+        b2 = m.get("broadphase/events/box2d_broadphase/%d" % n)
+        if b2 is None:
+            continue
+        row = {"n": n, "box2d_broadphase_ns_per_box": b2}
+        for impl in ("tree", "sweep", "grid"):
+            row[impl + "_ns_per_box"] = m.get("broadphase/events/%s/%d" % (impl, n))
+            row[impl + "_over_box2d"] = ratio(row[impl + "_ns_per_box"], b2)
+        events.append(row)
 
     def fmt(x, w=8):
         return ("%*.2f" % (w, x)) if isinstance(x, (int, float)) and x is not None else " " * (w - 1) + "-"
@@ -124,6 +143,18 @@ def main():
             r["n"], r["op"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
             fmt(r["box2d_tree_ns_per_box"], 10), fmt(r["brute_ns_per_box"], 9), fmt(r["box2d_over_tree"], 7),
             fmt(r["box2d_over_sweep"], 7), fmt(r["box2d_over_grid"], 7)))
+        if r["tree_batch_ns_per_box"] is not None:
+            print("%-7d %-7s tree add_batch (top-down) %s ns per box, speedup over Box2D tree %s" % (
+                r["n"], r["op"], fmt(r["tree_batch_ns_per_box"], 9), fmt(r["box2d_over_tree_batch"], 7)))
+
+    if events:
+        print("\nPair events per frame, every box moving (ns per box; ratio = collide / Box2D b2BroadPhase)")
+        print("%-7s %9s %9s %9s %10s | %7s %7s %7s" % ("N", "tree", "sweep", "grid", "b2BroadPh", "tree", "sweep", "grid"))
+        for r in events:
+            print("%-7d %s %s %s %s | %s %s %s" % (
+                r["n"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
+                fmt(r["box2d_broadphase_ns_per_box"], 10), fmt(r["tree_over_box2d"], 7), fmt(r["sweep_over_box2d"], 7),
+                fmt(r["grid_over_box2d"], 7)))
 
     goals = []
     for r in pairs:
@@ -141,12 +172,23 @@ def main():
             best = max(v for v in (r["box2d_over_tree"], r["box2d_over_sweep"], r["box2d_over_grid"]) if v is not None)
             goals.append({"goal": "broadphase all-pairs at 100k >= 5x faster per box than Box2D tree queries",
                           "value": best, "met": best >= 5})
+    for r in events:
+        best = min(v for v in (r["tree_over_box2d"], r["sweep_over_box2d"], r["grid_over_box2d"]) if v is not None)
+        goals.append({"goal": "pair-event update at %d moving boxes <= 0.5x Box2D b2BroadPhase" % r["n"],
+                      "value": best, "met": best <= 0.5})
+    for r in broad:
+        if r["op"] == "build" and r["n"] >= 10000 and r["box2d_over_tree"] is not None:
+            goals.append({"goal": "tree build (add one by one) at %d >= 1.0x Box2D tree's speed" % r["n"],
+                          "value": r["box2d_over_tree"], "met": r["box2d_over_tree"] >= 1.0})
+            if r["box2d_over_tree_batch"] is not None:
+                goals.append({"goal": "tree build (add_batch) at %d >= 1.0x Box2D tree's speed" % r["n"],
+                              "value": r["box2d_over_tree_batch"], "met": r["box2d_over_tree_batch"] >= 1.0})
     print("\nGoals:")
     for g in goals:
         print("  [%s] %s: %s" % ("met" if g["met"] else "MISSED", g["goal"], g["value"]))
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
-           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
+           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad, "broadphase_events": events,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:

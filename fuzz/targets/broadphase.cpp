@@ -2,13 +2,17 @@
 // three broadphase structures, each answer checked against brute force over the stored boxes:
 // - query(box) reports exactly the live proxies whose stored box meets the box (closed),
 // - raycast reports exactly the live proxies that ray_hits_box() hits, with the same t,
-// - pairs() reports exactly the overlapping pairs, each once (Sorted: in ascending order),
+// - pairs() and for_each_pair() report exactly the overlapping pairs whose filters accept each
+//   other, each once (Sorted: in ascending order); raycast_closest() gives the smallest t,
+// - every answer honours the category / mask filters of the proxies and of the query,
 // - stale handles throw InvalidProxy, raw corners that are not a box throw BadBox and change
 //   nothing, invalid rays throw BadRay, invalid margins / cell sizes are refused by name.
 //
 // Input: flags byte (bit 0: double; (byte >> 1) % 3: DynamicTree, SweepAndPrune, UniformGrid),
 // the structure's parameter (tree margin or grid cell size; unused by sweep-and-prune), then up
 // to kMaxOps operations until the input ends: an op byte (% 7) and its operands (raw scalars).
+// The op byte's quotient (/ 7) picks a filter: for add and move the proxy's (move then calls
+// set_filter), for query and raycast the query's; 0 keeps the default.
 
 #include "collide/broadphase.hpp"
 #include "collide/fuzz/decode.hpp"
@@ -40,7 +44,22 @@ struct Entry {
   ProxyId id;
   Box<T> box;
   bool live;
+  Filter filter{};
 };
+
+/// A proxy's filter from the op byte's quotient (1..36): one of three categories, a mask of
+/// three bits (0 pairs with nothing, 7 with everything); 0 is the default filter.
+Filter proxy_filter(int bits) {
+  if (bits == 0) return {};
+  const std::uint32_t mask = std::uint32_t(bits / 3) % 8;
+  return {1u << (bits % 3), mask == 7 ? 0xffffffffu : mask};
+}
+
+/// A query's filter from the op byte's quotient: 0 accepts every proxy.
+Filter query_filter(int bits) {
+  if (bits == 0) return Filter::everything();
+  return {std::uint32_t(bits % 8), std::uint32_t(bits / 8) % 8 == 7 ? 0xffffffffu : std::uint32_t(bits / 8) % 8};
+}
 
 std::string id_text(ProxyId id) {
   return cat("#", std::to_string(id.index), "/g", std::to_string(id.generation));
@@ -79,7 +98,8 @@ void check_pairs(const BP& bp, const std::vector<Entry<T>>& model, PairOrder ord
   std::vector<ProxyPair> want;
   for (std::size_t i = 0; i < model.size(); ++i) {
     for (std::size_t j = i + 1; j < model.size(); ++j) {
-      if (model[i].live && model[j].live && boxes_overlap(model[i].box, model[j].box)) {
+      if (model[i].live && model[j].live && boxes_overlap(model[i].box, model[j].box) &&
+          accepts(model[i].filter, model[j].filter)) {
         want.push_back(ordered_pair(model[i].id, model[j].id));
       }
     }
@@ -97,6 +117,13 @@ void check_pairs(const BP& bp, const std::vector<Entry<T>>& model, PairOrder ord
   if (got != want) {
     fail_raw("pairs(): ", std::to_string(got.size()), " pairs, brute force finds ", std::to_string(want.size()));
   }
+  std::vector<ProxyPair> walked;
+  bp.for_each_pair([&](ProxyId a, ProxyId b) { walked.push_back(ordered_pair(a, b)); });
+  std::sort(walked.begin(), walked.end());
+  if (walked != want) {
+    fail_raw("for_each_pair(): ", std::to_string(walked.size()), " pairs, brute force finds ",
+             std::to_string(want.size()));
+  }
 }
 
 template <Scalar T, class BP>
@@ -106,12 +133,13 @@ void run_ops(BP& bp, Reader& r) {
   auto live_count = [&] { return std::size_t(std::count_if(model.begin(), model.end(), [](const Entry<T>& e) { return e.live; })); };
   for (int op_index = 0; op_index < kMaxOps && !r.exhausted(); ++op_index) {
     const int group = op_index + 1;
-    const int op = r.byte() % 7;
+    const std::uint8_t op_byte = r.byte();
+    const int op = op_byte % 7, bits = op_byte / 7;
     if (op == 0) {  // add from raw corners
       const Corners<T> c = read_corners<T>(r, group);
       const std::optional<Box<T>> box = c.box();
       std::optional<ProxyId> id;
-      const auto err = error_of([&] { id = bp.add(c.min, c.max, model.size()); });
+      const auto err = error_of([&] { id = bp.add(c.min, c.max, model.size(), proxy_filter(bits)); });
       if (!box) {
         if (err != BroadphaseErrc::BadBox) fail_raw("add() with invalid corners was not refused with BadBox");
         continue;
@@ -121,7 +149,7 @@ void run_ops(BP& bp, Reader& r) {
         if (e.live && e.id == *id) fail_raw("add() issued the live handle ", id_text(*id), " again");
         if (!e.live && e.id == *id) fail_raw("add() reissued the removed handle ", id_text(*id));
       }
-      model.push_back({*id, *box, true});
+      model.push_back({*id, *box, true, proxy_filter(bits)});
     } else if (op == 1 || op == 2) {  // move (raw corners) / remove, possibly through a stale handle
       Entry<T>* e = pick_entry(r.byte());
       const Corners<T> c = op == 1 ? read_corners<T>(r, group) : Corners<T>{};
@@ -143,14 +171,19 @@ void run_ops(BP& bp, Reader& r) {
       }
       if (err) fail_raw("move() refused a valid box");
       e->box = *box;
+      if (bits != 0) {
+        bp.set_filter(e->id, proxy_filter(bits));
+        e->filter = proxy_filter(bits);
+      }
     } else if (op == 3) {  // query
       const Corners<T> c = read_corners<T>(r, group);
       const std::optional<Box<T>> box = c.box();
       if (!box) continue;
       std::vector<ProxyId> got, want;
-      bp.query(Aabb<T>::make(c.min, c.max).value(), [&](ProxyId id) { got.push_back(id); });
+      const Filter qf = query_filter(bits);
+      bp.query(Aabb<T>::make(c.min, c.max).value(), [&](ProxyId id) { got.push_back(id); }, qf);
       for (const Entry<T>& e : model) {
-        if (e.live && boxes_overlap(e.box, *box)) want.push_back(e.id);
+        if (e.live && boxes_overlap(e.box, *box) && accepts(e.filter, qf)) want.push_back(e.id);
       }
       std::sort(got.begin(), got.end());
       std::sort(want.begin(), want.end());
@@ -163,7 +196,10 @@ void run_ops(BP& bp, Reader& r) {
       const T dx = r.scalar<T>(Role::Other), dy = r.scalar<T>(Role::Other), max_t = r.scalar<T>(Role::Size);
       const Vec2<T> dir(dx, dy);
       std::vector<std::pair<ProxyId, Calc>> got, want;
-      const auto err = error_of([&] { bp.raycast(origin, dir, max_t, [&](ProxyId id, Calc t) { got.emplace_back(id, t); }); });
+      const Filter qf = query_filter(bits);
+      const auto err = error_of([&] {
+        bp.raycast(origin, dir, max_t, [&](ProxyId id, Calc t) { got.emplace_back(id, t); }, qf);
+      });
       const bool valid = origin.allFinite() && dir.allFinite() && std::isfinite(max_t) && max_t >= T(0);
       if (!valid) {
         if (err != BroadphaseErrc::BadRay) fail_raw("raycast() with an invalid ray was not refused with BadRay");
@@ -172,9 +208,20 @@ void run_ops(BP& bp, Reader& r) {
       if (err) fail_raw("raycast() refused a valid ray");
       const RaySegment<T> ray = make_ray(origin, dir, max_t);
       for (const Entry<T>& e : model) {
-        const Calc t = e.live ? ray_hits_box(ray, e.box) : -1;
+        const Calc t = e.live && accepts(e.filter, qf) ? ray_hits_box(ray, e.box) : -1;
         if (t >= 0) want.emplace_back(e.id, t);
       }
+      // Closest hit: the smallest t, ties to the lowest slot index.
+      std::optional<std::pair<ProxyId, Calc>> nearest;
+      for (const auto& h : want) {
+        if (!nearest || h.second < nearest->second ||
+            (h.second == nearest->second && h.first.index < nearest->first.index))
+          nearest = h;
+      }
+      const std::optional<ProxyHit> closest = bp.raycast_closest(origin, dir, max_t, qf);
+      if (closest.has_value() != nearest.has_value() ||
+          (closest && (closest->id != nearest->first || closest->t != nearest->second)))
+        fail_raw("raycast_closest() differs from the nearest brute-force hit");
       std::sort(got.begin(), got.end());
       std::sort(want.begin(), want.end());
       if (got != want) {

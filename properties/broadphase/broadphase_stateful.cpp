@@ -1,6 +1,7 @@
 // Model-based (stateful) properties of the three broadphase structures: random sequences of
-// add / move / remove / query / raycast / pairs, checked against a brute-force model, and the
-// three structures against each other. Both scalars. Plus the world helper against all-pairs.
+// add / move / remove / set_filter / query / raycast / pairs / pair-event updates, checked against a
+// brute-force model (filters included), and the three structures against each other. Both
+// scalars. Plus the world helpers and the persistent World against all-pairs.
 
 #include "collide/broadphase.hpp"
 
@@ -14,7 +15,9 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -27,7 +30,8 @@ namespace {
 /// Counters printed at the end, so a run shows what it exercised.
 struct Stats {
   std::atomic<long> commands{0}, pairs_checked{0}, touching_pairs{0}, queries{0}, rays{0}, ray_hits{0},
-      errors_checked{0}, sequences{0};
+      errors_checked{0}, sequences{0}, updates{0}, began{0}, ended{0}, filtered_out{0}, world_steps{0},
+      world_events{0};
 };
 Stats g_stats;
 
@@ -35,18 +39,53 @@ template <class T>
 struct Entry {
   bp::Box<T> box;
   bool live = true;
+  bp::Filter filter{};
 };
 template <class T>
 using Model = std::vector<Entry<T>>;
 
+/// A pair tracker over one structure, and the model index of every handle it issued.
+template <class BP, class T>
+struct Tracked {
+  explicit Tracked(BP b = BP()) : tracker(std::move(b)) {}
+  bp::PairTracker<BP, T> tracker;
+  std::vector<bp::ProxyId> id;
+  std::map<bp::ProxyId, std::size_t> index;
+  void add(const bp::Box<T>& b, std::size_t k, bp::Filter f) {
+    id.push_back(tracker.add(Aabb<T>(b.min, b.max), k, f));
+    index[id.back()] = k;
+  }
+};
+
 /// The system under test: all three structures fed the same commands; user data = model index.
+/// Also each structure under a pair tracker, and the pairs the trackers reported so far.
 template <class T>
 struct Sut {
   bp::DynamicTree<T> tree{T(0.5)};
   bp::SweepAndPrune<T> sweep;
   bp::UniformGrid<T> grid{T(1)};
   std::vector<bp::ProxyId> tree_id, sweep_id, grid_id;
+  Tracked<bp::DynamicTree<T>, T> ttree{bp::DynamicTree<T>(T(0.5))};
+  Tracked<bp::SweepAndPrune<T>, T> tsweep;
+  Tracked<bp::UniformGrid<T>, T> tgrid{bp::UniformGrid<T>(T(1))};
+  std::vector<std::pair<std::size_t, std::size_t>> reported;  ///< pairs current at the last update
 };
+
+/// Filters from three category bits: mostly the default, sometimes restrictive (mask 0 included).
+inline rc::Gen<bp::Filter> gen_filter() {
+  return rc::gen::weightedOneOf<bp::Filter>(
+      {{3, rc::gen::just(bp::Filter{})},
+       {2, rc::gen::apply([](int c, int m) { return bp::Filter{std::uint32_t(c), std::uint32_t(m)}; },
+                          rc::gen::inRange(1, 8), rc::gen::inRange(0, 8))}});
+}
+
+/// Query filters: mostly everything, sometimes three random bits.
+inline rc::Gen<bp::Filter> gen_query_filter() {
+  return rc::gen::weightedOneOf<bp::Filter>(
+      {{1, rc::gen::just(bp::Filter::everything())},
+       {1, rc::gen::apply([](int c, int m) { return bp::Filter{std::uint32_t(c), std::uint32_t(m)}; },
+                          rc::gen::inRange(0, 8), rc::gen::inRange(0, 8))}});
+}
 
 /// Dyadic coordinates on a half-unit lattice (many exact touches), sometimes far away or huge,
 /// so the grid's oversized list and large magnitudes are exercised.
@@ -117,18 +156,24 @@ bool only_touching(const bp::Box<T>& a, const bp::Box<T>& b) {
 template <class T>
 struct Add : rc::state::Command<Model<T>, Sut<T>> {
   bp::Box<T> box = *gen_box<T>();
-  void apply(Model<T>& m) const override { m.push_back({box, true}); }
+  bp::Filter filter = *gen_filter();
+  void apply(Model<T>& m) const override { m.push_back({box, true, filter}); }
   void run(const Model<T>& m, Sut<T>& s) const override {
     const std::uint64_t k = m.size();
-    s.tree_id.push_back(s.tree.add(to_aabb(box), k));
-    s.sweep_id.push_back(s.sweep.add(to_aabb(box), k));
-    s.grid_id.push_back(s.grid.add(box.min, box.max, k));  // the raw-corner overload
+    s.tree_id.push_back(s.tree.add(to_aabb(box), k, filter));
+    s.sweep_id.push_back(s.sweep.add(to_aabb(box), k, filter));
+    s.grid_id.push_back(s.grid.add(box.min, box.max, k, filter));  // the raw-corner overload
+    s.ttree.add(box, k, filter);
+    s.tsweep.add(box, k, filter);
+    s.tgrid.add(box, k, filter);
+    RC_ASSERT(s.sweep.filter(s.sweep_id.back()) == filter);
     RC_ASSERT(s.tree.user_data(s.tree_id.back()) == k);
     RC_ASSERT(s.grid.box(s.grid_id.back()).max() == box.max);
     ++g_stats.commands;
   }
   void show(std::ostream& os) const override {
-    os << "Add(" << box.min.transpose() << " / " << box.max.transpose() << ")";
+    os << "Add(" << box.min.transpose() << " / " << box.max.transpose() << ", filter " << filter.category << "/"
+       << filter.mask << ")";
   }
 };
 
@@ -156,6 +201,9 @@ struct Move : rc::state::Command<Model<T>, Sut<T>> {
     s.tree.move(s.tree_id[k], to_aabb(box));
     s.sweep.move(s.sweep_id[k], box.min, box.max);
     s.grid.move(s.grid_id[k], to_aabb(box));
+    s.ttree.tracker.move(s.ttree.id[k], to_aabb(box));
+    s.tsweep.tracker.move(s.tsweep.id[k], to_aabb(box));
+    s.tgrid.tracker.move(s.tgrid.id[k], to_aabb(box));
     ++g_stats.commands;
   }
   void show(std::ostream& os) const override {
@@ -177,6 +225,9 @@ struct Remove : rc::state::Command<Model<T>, Sut<T>> {
     s.tree.remove(s.tree_id[k]);
     s.sweep.remove(s.sweep_id[k]);
     s.grid.remove(s.grid_id[k]);
+    s.ttree.tracker.remove(s.ttree.id[k]);
+    s.tsweep.tracker.remove(s.tsweep.id[k]);
+    s.tgrid.tracker.remove(s.tgrid.id[k]);
     RC_ASSERT(!s.tree.contains(s.tree_id[k]));
     RC_ASSERT(!s.sweep.contains(s.sweep_id[k]));
     RC_ASSERT(!s.grid.contains(s.grid_id[k]));
@@ -247,16 +298,110 @@ struct AddBad : rc::state::Command<Model<T>, Sut<T>> {
 };
 
 template <class T>
+struct SetFilter : rc::state::Command<Model<T>, Sut<T>> {
+  explicit SetFilter(const Model<T>& m) {
+    const auto live = live_indices(m);
+    RC_PRE(!live.empty());
+    k = *rc::gen::elementOf(live);
+  }
+  std::size_t k = 0;
+  bp::Filter filter = *gen_filter();
+  void checkPreconditions(const Model<T>& m) const override { RC_PRE(is_live(m, k)); }
+  void apply(Model<T>& m) const override { m[k].filter = filter; }
+  void run(const Model<T>&, Sut<T>& s) const override {
+    s.tree.set_filter(s.tree_id[k], filter);
+    s.sweep.set_filter(s.sweep_id[k], filter);
+    s.grid.set_filter(s.grid_id[k], filter);
+    s.ttree.tracker.set_filter(s.ttree.id[k], filter);
+    s.tsweep.tracker.set_filter(s.tsweep.id[k], filter);
+    s.tgrid.tracker.set_filter(s.tgrid.id[k], filter);
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override {
+    os << "SetFilter(" << k << ", " << filter.category << "/" << filter.mask << ")";
+  }
+};
+
+/// The model's pairs: live, overlapping (closed) and accepted by both filters; sorted (i < j).
+template <class T>
+std::vector<std::pair<std::size_t, std::size_t>> model_pairs(const Model<T>& m) {
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    for (std::size_t j = i + 1; j < m.size(); ++j) {
+      if (!m[i].live || !m[j].live || !bp::boxes_overlap(m[i].box, m[j].box)) continue;
+      if (!bp::accepts(m[i].filter, m[j].filter)) {
+        ++g_stats.filtered_out;
+        continue;
+      }
+      out.emplace_back(i, j);
+    }
+  }
+  return out;
+}
+
+/// Pair events: each tracker reports exactly the model's pairs that began (now, not at the last
+/// update) and ended (at the last update, not now), each once; all three agree.
+template <class T>
+struct Update : rc::state::Command<Model<T>, Sut<T>> {
+  void apply(Model<T>&) const override {}
+  void run(const Model<T>& m, Sut<T>& s) const override {
+    using P = std::pair<std::size_t, std::size_t>;
+    const std::vector<P> now = model_pairs(m);
+    std::vector<P> began, ended;
+    std::set_difference(now.begin(), now.end(), s.reported.begin(), s.reported.end(), std::back_inserter(began));
+    std::set_difference(s.reported.begin(), s.reported.end(), now.begin(), now.end(), std::back_inserter(ended));
+    const auto check = [&](auto& t) {
+      const bp::PairEvents e = t.tracker.update();
+      const auto as_model = [&](const std::vector<bp::ProxyPair>& ps) {
+        std::vector<P> out;
+        for (const auto& p : ps) {
+          RC_ASSERT(p.a.index < p.b.index);
+          const std::size_t x = t.index.at(p.a), y = t.index.at(p.b);
+          out.emplace_back(std::min(x, y), std::max(x, y));
+        }
+        std::sort(out.begin(), out.end());  // duplicates stay and fail the comparison
+        return out;
+      };
+      RC_ASSERT(as_model(e.began) == began);
+      RC_ASSERT(as_model(e.ended) == ended);
+      // The tracker's partner lists are the current pairs.
+      for (std::size_t k = 0; k < m.size(); ++k) {
+        if (!m[k].live) continue;
+        std::size_t partners = 0;
+        t.tracker.for_each_partner(t.id[k], [&](bp::ProxyId o) {
+          const std::size_t x = t.index.at(o);
+          RC_ASSERT(std::binary_search(now.begin(), now.end(), P(std::min(k, x), std::max(k, x))));
+          ++partners;
+        });
+        RC_ASSERT(partners == std::size_t(std::count_if(now.begin(), now.end(), [&](const P& p) {
+                    return p.first == k || p.second == k;
+                  })));
+      }
+    };
+    check(s.ttree);
+    check(s.tsweep);
+    check(s.tgrid);
+    s.reported = now;
+    ++g_stats.updates;
+    g_stats.began += long(began.size());
+    g_stats.ended += long(ended.size());
+    ++g_stats.commands;
+  }
+  void show(std::ostream& os) const override { os << "Update"; }
+};
+
+template <class T>
 struct Query : rc::state::Command<Model<T>, Sut<T>> {
   bp::Box<T> q = *gen_box<T>();
+  bp::Filter filter = *gen_query_filter();
   void apply(Model<T>&) const override {}
   void run(const Model<T>& m, Sut<T>& s) const override {
     std::vector<std::size_t> expected;
     for (std::size_t i = 0; i < m.size(); ++i)
-      if (m[i].live && bp::boxes_overlap(m[i].box, q)) expected.push_back(i);
+      if (m[i].live && bp::boxes_overlap(m[i].box, q) && bp::accepts(m[i].filter, filter)) expected.push_back(i);
     const auto collect = [&](const auto& b) {
       std::vector<std::size_t> got;
-      b.query(to_aabb(q), [&](bp::ProxyId id) { got.push_back(b.user_data(id)); });
+      b.query(to_aabb(q), [&](bp::ProxyId id) { got.push_back(b.user_data(id)); }, filter);
       std::sort(got.begin(), got.end());  // duplicates stay and fail the comparison
       return got;
     };
@@ -267,7 +412,8 @@ struct Query : rc::state::Command<Model<T>, Sut<T>> {
     ++g_stats.commands;
   }
   void show(std::ostream& os) const override {
-    os << "Query(" << q.min.transpose() << " / " << q.max.transpose() << ")";
+    os << "Query(" << q.min.transpose() << " / " << q.max.transpose() << ", filter " << filter.category << "/"
+       << filter.mask << ")";
   }
 };
 
@@ -276,31 +422,51 @@ struct Raycast : rc::state::Command<Model<T>, Sut<T>> {
   Vec2<T> origin = Vec2<T>(T(*rc::gen::inRange(-20, 21)) / 2, T(*rc::gen::inRange(-20, 21)) / 2);
   Vec2<T> direction = Vec2<T>(T(*rc::gen::inRange(-8, 9)) * 2, T(*rc::gen::inRange(-8, 9)) * 2);
   T max_t = T(*rc::gen::inRange(0, 5)) / 2;
+  bp::Filter filter = *gen_query_filter();
   void apply(Model<T>&) const override {}
   void run(const Model<T>& m, Sut<T>& s) const override {
     const bp::RaySegment<T> r = bp::make_ray(origin, direction, max_t);
     std::vector<std::size_t> expected;
-    for (std::size_t i = 0; i < m.size(); ++i)
-      if (m[i].live && bp::ray_hits_box(r, m[i].box) >= 0) expected.push_back(i);
-    const auto collect = [&](const auto& b) {
+    collide::Calc best_t = 0;
+    std::optional<std::size_t> best;
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      if (!m[i].live || !bp::accepts(m[i].filter, filter)) continue;
+      const collide::Calc t = bp::ray_hits_box(r, m[i].box);
+      if (t < 0) continue;
+      expected.push_back(i);
+      if (!best || t < best_t) best = i, best_t = t;
+    }
+    const auto collect = [&](const auto& b, const std::vector<bp::ProxyId>& ids) {
       std::vector<std::size_t> got;
-      b.raycast(origin, direction, max_t, [&](bp::ProxyId id, collide::Calc t) {
-        const bool in_range = t >= 0 && t <= collide::Calc(max_t);
-        RC_ASSERT(in_range);
-        got.push_back(b.user_data(id));
-      });
+      b.raycast(
+          origin, direction, max_t,
+          [&](bp::ProxyId id, collide::Calc t) {
+            const bool in_range = t >= 0 && t <= collide::Calc(max_t);
+            RC_ASSERT(in_range);
+            got.push_back(b.user_data(id));
+          },
+          filter);
       std::sort(got.begin(), got.end());
+      // Closest hit: the smallest t (ties by slot index, so compare t and that the proxy is hit there).
+      const auto closest = b.raycast_closest(origin, direction, max_t, filter);
+      RC_ASSERT(closest.has_value() == best.has_value());
+      if (closest) {
+        RC_ASSERT(closest->t == best_t);
+        RC_ASSERT(bp::ray_hits_box(r, m[b.user_data(closest->id)].box) == best_t);
+        RC_ASSERT(b.contains(closest->id) && closest->id.index <= ids[*best].index);
+      }
       return got;
     };
-    RC_ASSERT(collect(s.tree) == expected);
-    RC_ASSERT(collect(s.sweep) == expected);
-    RC_ASSERT(collect(s.grid) == expected);
+    RC_ASSERT(collect(s.tree, s.tree_id) == expected);
+    RC_ASSERT(collect(s.sweep, s.sweep_id) == expected);
+    RC_ASSERT(collect(s.grid, s.grid_id) == expected);
     ++g_stats.rays;
     g_stats.ray_hits += long(expected.size());
     ++g_stats.commands;
   }
   void show(std::ostream& os) const override {
-    os << "Raycast(" << origin.transpose() << " + t " << direction.transpose() << ", t <= " << max_t << ")";
+    os << "Raycast(" << origin.transpose() << " + t " << direction.transpose() << ", t <= " << max_t << ", filter "
+       << filter.category << "/" << filter.mask << ")";
   }
 };
 
@@ -308,15 +474,9 @@ template <class T>
 struct Pairs : rc::state::Command<Model<T>, Sut<T>> {
   void apply(Model<T>&) const override {}
   void run(const Model<T>& m, Sut<T>& s) const override {
-    std::vector<std::pair<std::size_t, std::size_t>> expected;
+    const std::vector<std::pair<std::size_t, std::size_t>> expected = model_pairs(m);
     long touching = 0;
-    for (std::size_t i = 0; i < m.size(); ++i) {
-      for (std::size_t j = i + 1; j < m.size(); ++j) {
-        if (!m[i].live || !m[j].live || !bp::boxes_overlap(m[i].box, m[j].box)) continue;
-        expected.emplace_back(i, j);
-        touching += only_touching(m[i].box, m[j].box) ? 1 : 0;
-      }
-    }
+    for (const auto& [i, j] : expected) touching += only_touching(m[i].box, m[j].box) ? 1 : 0;
     const auto check = [&](const auto& b) {
       // Sorted order: identical list (ids ascending by slot), each pair once.
       const auto sorted = b.pairs(bp::PairOrder::Sorted);
@@ -327,6 +487,11 @@ struct Pairs : rc::state::Command<Model<T>, Sut<T>> {
       auto any = to_model(b, b.pairs());
       std::sort(any.begin(), any.end());
       RC_ASSERT(any == expected);
+      std::vector<bp::ProxyPair> walked;
+      b.for_each_pair([&](bp::ProxyId x, bp::ProxyId y) { walked.push_back(bp::ordered_pair(x, y)); });
+      auto w = to_model(b, walked);
+      std::sort(w.begin(), w.end());
+      RC_ASSERT(w == expected);
       return sorted;
     };
     const auto t = check(s.tree), w = check(s.sweep), g = check(s.grid);
@@ -359,7 +524,8 @@ void check_stateful() {
   ++g_stats.sequences;
   rc::state::check(initial, sut,
                    rc::state::gen::execOneOfWithArgs<Add<T>, Add<T>, Add<T>, Move<T>, Move<T>, Remove<T>,
-                                                     UseStale<T>, AddBad<T>, Query<T>, Raycast<T>, Pairs<T>>());
+                                                     UseStale<T>, AddBad<T>, SetFilter<T>, Query<T>, Raycast<T>,
+                                                     Pairs<T>, Update<T>, Update<T>>());
 }
 
 template <class T>
@@ -424,7 +590,117 @@ void check_world_ray(const std::vector<collide::Shape<T>>& shapes, const Vec2<T>
   RC_CLASSIFY(expected.has_value(), "hit");
 }
 
+/// The persistent World over a random script of add / move / remove / set_filter between steps:
+/// each step reports exactly the pairs whose overlaps() (and filters) began or ended, each once;
+/// point, shape and ray queries match every shape tested directly.
+template <class T, class BP>
+void check_world_steps(BP structure) {
+  using P = std::pair<std::size_t, std::size_t>;
+  bp::World<T, BP> w(std::move(structure));
+  struct Body {
+    collide::Shape<T> shape;
+    bp::Filter filter;
+    bool live;
+  };
+  std::vector<Body> model;
+  std::vector<bp::ProxyId> ids;
+  std::map<bp::ProxyId, std::size_t> index;
+  std::vector<P> reported;
+  const int steps = *rc::gen::inRange(1, 6);
+  for (int step = 0; step < steps; ++step) {
+    const int ops = *rc::gen::inRange(0, 10);
+    for (int o = 0; o < ops; ++o) {
+      std::vector<std::size_t> live;
+      for (std::size_t i = 0; i < model.size(); ++i)
+        if (model[i].live) live.push_back(i);
+      const int op = live.empty() ? 0 : *rc::gen::inRange(0, 4);
+      if (op == 0) {
+        const auto shape = *gen_shape<T>();
+        const bp::Filter f = *gen_filter();
+        ids.push_back(w.add(shape, model.size(), f));
+        index[ids.back()] = model.size();
+        model.push_back({shape, f, true});
+        continue;
+      }
+      const std::size_t k = *rc::gen::elementOf(live);
+      if (op == 1) {
+        model[k].shape = *gen_shape<T>();
+        w.move(ids[k], model[k].shape);
+      } else if (op == 2) {
+        model[k].live = false;
+        w.remove(ids[k]);
+      } else {
+        model[k].filter = *gen_filter();
+        w.set_filter(ids[k], model[k].filter);
+      }
+    }
+    std::vector<P> now;
+    for (std::size_t i = 0; i < model.size(); ++i)
+      for (std::size_t j = i + 1; j < model.size(); ++j)
+        if (model[i].live && model[j].live && bp::accepts(model[i].filter, model[j].filter) &&
+            collide::overlaps(model[i].shape, model[j].shape))
+          now.emplace_back(i, j);
+    std::vector<P> began, ended;
+    std::set_difference(now.begin(), now.end(), reported.begin(), reported.end(), std::back_inserter(began));
+    std::set_difference(reported.begin(), reported.end(), now.begin(), now.end(), std::back_inserter(ended));
+    const bp::PairEvents& e = w.step();
+    const auto as_model = [&](const std::vector<bp::ProxyPair>& ps) {
+      std::vector<P> out;
+      for (const auto& p : ps) out.emplace_back(std::min(index.at(p.a), index.at(p.b)), std::max(index.at(p.a), index.at(p.b)));
+      std::sort(out.begin(), out.end());
+      return out;
+    };
+    RC_ASSERT(as_model(e.began) == began);
+    RC_ASSERT(as_model(e.ended) == ended);
+    std::vector<bp::ProxyPair> current;
+    w.for_each_contact([&](bp::ProxyId a, bp::ProxyId b) { current.push_back(bp::ordered_pair(a, b)); });
+    RC_ASSERT(as_model(current) == now);
+    reported = now;
+    ++g_stats.world_steps;
+    g_stats.world_events += long(began.size() + ended.size());
+  }
+  // Queries against the final state.
+  const Vec2<T> p(T(*rc::gen::inRange(-40, 41)) / 4, T(*rc::gen::inRange(-40, 41)) / 4);
+  const auto probe = *gen_shape<T>();
+  const bp::Filter qf = *gen_query_filter();
+  std::vector<std::size_t> want_point, want_shape, got_point, got_shape;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (!model[i].live || !bp::accepts(model[i].filter, qf)) continue;
+    if (collide::contains(model[i].shape, p)) want_point.push_back(i);
+    if (collide::overlaps(probe, model[i].shape)) want_shape.push_back(i);
+  }
+  w.query_point(p, [&](bp::ProxyId id) { got_point.push_back(index.at(id)); }, qf);
+  w.query_shape(probe, [&](bp::ProxyId id) { got_shape.push_back(index.at(id)); }, qf);
+  std::sort(got_point.begin(), got_point.end());
+  std::sort(got_shape.begin(), got_shape.end());
+  RC_ASSERT(got_point == want_point);
+  RC_ASSERT(got_shape == want_shape);
+  const collide::Ray<T> ray{p, Vec2<T>(T(*rc::gen::inRange(-16, 17)) / 2, T(*rc::gen::inRange(-16, 17)) / 2)};
+  const T max_t = T(*rc::gen::inRange(0, 9)) / 2;
+  std::optional<collide::Calc> want_t;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (!model[i].live || !bp::accepts(model[i].filter, qf)) continue;
+    const auto h = collide::raycast(model[i].shape, ray, max_t);
+    if (h && (!want_t || h->t < *want_t)) want_t = h->t;
+  }
+  const auto hit = w.raycast(ray, max_t, qf);
+  RC_ASSERT(hit.has_value() == want_t.has_value());
+  if (hit) RC_ASSERT(collide::Calc(hit->hit.t) == *want_t);
+  RC_CLASSIFY(!reported.empty(), "contacts at the end");
+}
+
 }  // namespace
+
+RC_GTEST_PROP(BroadphaseWorld, FloatStepsReportBeganAndEndedContacts, ()) {
+  check_world_steps<float>(bp::DynamicTree<float>(0.25f));
+  check_world_steps<float>(bp::SweepAndPrune<float>());
+  check_world_steps<float>(bp::UniformGrid<float>(2.0f));
+}
+RC_GTEST_PROP(BroadphaseWorld, DoubleStepsReportBeganAndEndedContacts, ()) {
+  check_world_steps<double>(bp::DynamicTree<double>(0.25));
+  check_world_steps<double>(bp::SweepAndPrune<double>());
+  check_world_steps<double>(bp::UniformGrid<double>(2.0));
+}
 
 RC_GTEST_PROP(BroadphaseStateful, FloatMatchesBruteForceModel, ()) { check_stateful<float>(); }
 RC_GTEST_PROP(BroadphaseStateful, DoubleMatchesBruteForceModel, ()) { check_stateful<double>(); }
@@ -471,6 +747,8 @@ int main(int argc, char** argv) {
   std::cout << "broadphase stats: sequences=" << g_stats.sequences << " commands=" << g_stats.commands
             << " pair_checks=" << g_stats.pairs_checked << " touching_pairs=" << g_stats.touching_pairs
             << " queries=" << g_stats.queries << " rays=" << g_stats.rays << " ray_hits=" << g_stats.ray_hits
-            << " named_errors=" << g_stats.errors_checked << "\n";
+            << " named_errors=" << g_stats.errors_checked << " updates=" << g_stats.updates
+            << " began=" << g_stats.began << " ended=" << g_stats.ended << " filtered_out=" << g_stats.filtered_out
+            << " world_steps=" << g_stats.world_steps << " world_events=" << g_stats.world_events << "\n";
   return rc;
 }

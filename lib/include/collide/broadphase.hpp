@@ -5,15 +5,28 @@
 /// - DynamicTree<T>: incremental AABB tree with fattened leaves and rotations (any distribution).
 /// - SweepAndPrune<T>: array sorted on x, insertion-sorted after coherent motion.
 /// - UniformGrid<T>: spatial hash of square cells (similar-sized boxes).
+/// - PairTracker<BP, T>: any of the three plus pair events (pairs that began / ended per update).
+/// - World<T, BP>: persistent bodies (shape, user data, filter); step() reports contacts that
+///   began / ended; point, shape and ray queries settled by the exact predicates.
 ///
-/// Interface (each structure): add(box[, user]) -> ProxyId, move(id, box), remove(id),
-/// query(box, f(id)), raycast(origin, direction, max_t, f(id, t)), pairs([order]),
-/// contains(id), box(id), user_data(id), size(). Boxes are closed: touching counts. The pairs
-/// reported are exactly the pairs whose stored boxes overlap, each once; PairOrder::Sorted gives
-/// the same list from all three. Stale or foreign handles throw BroadphaseError(InvalidProxy);
-/// raw corners that do not form a valid box throw BroadphaseError(BadBox).
+/// Interface (each structure): add(box[, user[, filter]]) -> ProxyId, move(id, box), remove(id),
+/// set_filter(id, filter), query(box, f(id)[, filter]), query_point(p, f(id)[, filter]),
+/// raycast(origin, direction, max_t, f(id, t)[, filter]), raycast_closest(...), for_each_pair(f(a, b)),
+/// pairs([order]), contains(id), box(id), user_data(id), filter(id), size(). Boxes are closed:
+/// touching counts. The pairs reported are exactly the pairs whose stored boxes overlap and whose
+/// filters accept each other, each once; PairOrder::Sorted gives the same list from all three.
+/// Stale or foreign handles throw BroadphaseError(InvalidProxy); raw corners that do not form a
+/// valid box throw BroadphaseError(BadBox).
+///
+/// Thread safety and re-entrancy: const members only read the structure and keep their traversal
+/// state on the caller's stack. Any number of threads may call const members of one structure at
+/// once while no thread modifies it; a callback may call const members of the same or another
+/// structure (a query from inside a query is exact). Modifying a structure (add, move, remove,
+/// set_filter, flush) while any other call on it runs, including from its own callback, is a data
+/// race. PairTracker and World (pair events, the persistent world) follow the same rule.
 
 #include "collide/broadphase/common.hpp"
+#include "collide/broadphase/events.hpp"
 #include "collide/broadphase/grid.hpp"
 #include "collide/broadphase/sweep.hpp"
 #include "collide/broadphase/tree.hpp"
@@ -35,10 +48,12 @@ concept BroadphaseOf = requires(B b, const B cb, const Aabb<T>& box, ProxyId id)
   { cb.contains(id) } -> std::same_as<bool>;
   { cb.pairs(PairOrder::Sorted) } -> std::same_as<std::vector<ProxyPair>>;
   cb.query(box, [](ProxyId) {});
+  cb.query(box, [](ProxyId) {}, Filter{});
+  cb.for_each_pair([](ProxyId, ProxyId) {});
 };
 
-/// Pairs with at least one proxy in `moved` (e.g. the proxies moved this step), each once,
-/// a.index < b.index. Errors: InvalidProxy (any handle in moved).
+/// Pairs with at least one proxy in `moved` (e.g. the proxies moved this step) whose filters
+/// accept each other, each once, a.index < b.index. Errors: InvalidProxy (any handle in moved).
 template <class B>
 std::vector<ProxyPair> pairs_involving(const B& bp, std::span<const ProxyId> moved,
                                       PairOrder order = PairOrder::Any) {
@@ -52,11 +67,14 @@ std::vector<ProxyPair> pairs_involving(const B& bp, std::span<const ProxyId> mov
   const auto is_moved = [&](ProxyId id) { return std::binary_search(sorted.begin(), sorted.end(), id); };
   std::vector<ProxyPair> out;
   for (const ProxyId id : sorted) {
-    bp.query(bp.box(id), [&](ProxyId other) {
-      if (other == id) return;
-      if (is_moved(other) && other.index < id.index) return;  // found from `other`
-      out.push_back(ordered_pair(id, other));
-    });
+    bp.query(
+        bp.box(id),
+        [&](ProxyId other) {
+          if (other == id) return;
+          if (is_moved(other) && other.index < id.index) return;  // found from `other`
+          out.push_back(ordered_pair(id, other));
+        },
+        bp.filter(id));
   }
   finish_pairs(out, order);
   return out;

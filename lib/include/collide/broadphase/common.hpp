@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -51,6 +52,7 @@ class BroadphaseError : public std::invalid_argument {
  public:
   BroadphaseError(BroadphaseErrc code, std::string_view what)
       : std::invalid_argument(std::string(name(code)) + ": " + std::string(what)), code_(code) {}
+  /// Why the call was refused.
   BroadphaseErrc code() const noexcept { return code_; }
 
  private:
@@ -72,6 +74,26 @@ struct ProxyPair {
   ProxyId b;
   friend constexpr bool operator==(const ProxyPair&, const ProxyPair&) = default;
   friend constexpr auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
+};
+
+/// Collision filter of a proxy (or of a query): a pair (or a hit) is reported only when
+/// `(a.category & b.mask) != 0 && (b.category & a.mask) != 0`. A proxy whose category or mask is
+/// 0 is never reported by anything.
+struct Filter {
+  std::uint32_t category = 1;          ///< which groups this proxy belongs to (bits)
+  std::uint32_t mask = 0xffffffffu;    ///< which groups this proxy pairs with (bits)
+  /// The filter that accepts every proxy with a non-zero category and mask (queries' default).
+  static constexpr Filter everything() noexcept { return {0xffffffffu, 0xffffffffu}; }
+  friend constexpr bool operator==(const Filter&, const Filter&) = default;
+};
+
+/// The pairing rule of two filters (symmetric).
+constexpr bool accepts(Filter a, Filter b) noexcept { return (a.category & b.mask) != 0 && (b.category & a.mask) != 0; }
+
+/// A proxy met by a ray: the handle and the entry parameter t (units of |direction|).
+struct ProxyHit {
+  ProxyId id;  ///< the proxy
+  Calc t = 0;  ///< entry parameter, 0 <= t <= max_t
 };
 
 /// Order of the pair list: Any is whatever the structure finds fastest; Sorted is ascending by
@@ -100,6 +122,7 @@ inline bool box_contains(const Box<T>& outer, const Box<T>& inner) noexcept {
          inner.max.x() <= outer.max.x() && inner.max.y() <= outer.max.y();
 }
 
+/// The corners of a validated box.
 template <Scalar T>
 inline Box<T> box_of(const Aabb<T>& a) noexcept {
   return {a.min(), a.max()};
@@ -208,9 +231,11 @@ inline T checked_margin(T margin) {
 template <Scalar T, class Extra>
 class Slots {
  public:
+  /// One proxy's record.
   struct Slot {
     Box<T> box{};
     std::uint64_t user = 0;
+    Filter filter{};
     std::uint32_t generation = 0;
     bool live = false;
     Extra extra{};
@@ -222,10 +247,12 @@ class Slots {
       throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");
     return id.index;
   }
+  /// True when id names a live slot of this table.
   bool contains(ProxyId id) const noexcept {
     return id.index < slots_.size() && slots_[id.index].live && slots_[id.index].generation == id.generation;
   }
-  ProxyId allocate(const Box<T>& box, std::uint64_t user) {
+  /// Takes a free slot (or a new one) for a proxy. Errors: TooManyProxies.
+  ProxyId allocate(const Box<T>& box, std::uint64_t user, Filter filter) {
     std::uint32_t i;
     if (!free_.empty()) {
       i = free_.back();
@@ -239,22 +266,32 @@ class Slots {
     Slot& s = slots_[i];
     s.box = box;
     s.user = user;
+    s.filter = filter;
     s.live = true;
     s.extra = Extra{};
     ++live_;
     return {i, s.generation};
   }
+  /// Frees slot i; its handle becomes stale.
   void release(std::uint32_t i) {
     slots_[i].live = false;
     ++slots_[i].generation;  // wraps after 2^32 reuses of one slot; a stale handle that old is not detected
     free_.push_back(i);
     --live_;
   }
+  /// Reserves room for n slots in all.
+  void reserve(std::size_t n) { slots_.reserve(n); }
+  /// Slot i (unchecked).
   Slot& operator[](std::uint32_t i) noexcept { return slots_[i]; }
+  /// Slot i (unchecked).
   const Slot& operator[](std::uint32_t i) const noexcept { return slots_[i]; }
+  /// The current handle of slot i.
   ProxyId id(std::uint32_t i) const noexcept { return {i, slots_[i].generation}; }
+  /// Number of slots, live or free.
   std::size_t capacity() const noexcept { return slots_.size(); }
+  /// Number of live slots.
   std::size_t size() const noexcept { return live_; }
+  /// Drops every slot.
   void clear() {
     slots_.clear();
     free_.clear();
@@ -267,18 +304,63 @@ class Slots {
   std::size_t live_ = 0;
 };
 
+/// Orders a pair by slot index.
+inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
+  return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};
+}
+
+/// Traversal stack local to one call: kInline entries live in the call's frame, deeper
+/// traversals spill to the heap. Local, so nested and concurrent queries never share it.
+template <class V, std::size_t kInline = 128>
+class LocalStack {
+ public:
+  /// Pushes v (on the heap only beyond kInline entries).
+  void push(const V& v) {
+    if (n_ < kInline) {
+      inline_[n_] = v;
+    } else {
+      heap_.push_back(v);
+    }
+    ++n_;
+  }
+  /// Removes and returns the top entry (the stack must not be empty).
+  V pop() {
+    --n_;
+    if (n_ < kInline) return inline_[n_];
+    const V v = heap_.back();
+    heap_.pop_back();
+    return v;
+  }
+  /// True when nothing is on the stack.
+  bool empty() const noexcept { return n_ == 0; }
+
+ private:
+  V inline_[kInline];
+  std::vector<V> heap_;
+  std::size_t n_ = 0;
+};
+
 /// The proxy operations all three structures offer identically. Derived supplies
-/// add_box(Box, user) -> ProxyId, move_box(ProxyId, Box), unlink(slot) (drop the slot from its
-/// index before the slot is released), raycast(origin, direction, max_t, f), and a member
-/// `slots_` (a Slots table); it befriends this class and re-exports raycast with a using.
+/// add_box(Box, user, filter) -> ProxyId, move_box(ProxyId, Box), unlink(slot) (drop the slot from
+/// its index before the slot is released), query(Aabb, f, filter), raycast(origin, direction,
+/// max_t, f, filter), and a member `slots_` (a Slots table); it befriends this class and
+/// re-exports raycast with a using.
+///
+/// Thread safety (all three structures): every const member function only reads the structure
+/// and keeps its traversal state on the caller's stack, so any number of threads may call const
+/// members at once while no thread calls a non-const one, and a callback may call any const
+/// member of the same or another structure (nested queries). A callback must not modify the
+/// structure it is called from.
 template <class Derived, Scalar T>
 class ProxyOps {
  public:
-  /// Adds a proxy for box, carrying user (returned by user_data()).
-  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0) { return self().add_box(box_of(box), user); }
+  /// Adds a proxy for box, carrying user (returned by user_data()) and a filter.
+  ProxyId add(const Aabb<T>& box, std::uint64_t user = 0, Filter filter = {}) {
+    return self().add_box(box_of(box), user, filter);
+  }
   /// Adds a proxy from raw corners. Errors: BadBox.
-  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0) {
-    return self().add_box(checked_box(min, max), user);
+  ProxyId add(const Vec2<T>& min, const Vec2<T>& max, std::uint64_t user = 0, Filter filter = {}) {
+    return self().add_box(checked_box(min, max), user, filter);
   }
   /// Replaces the proxy's box. Errors: InvalidProxy.
   void move(ProxyId id, const Aabb<T>& box) { self().move_box(id, box_of(box)); }
@@ -293,7 +375,11 @@ class ProxyOps {
     self().unlink(s);
     self().slots_.release(s);
   }
+  /// Replaces the proxy's filter (takes effect for every later call). Errors: InvalidProxy.
+  void set_filter(ProxyId id, Filter filter) { self().slots_[self().slots_.check(id)].filter = filter; }
+  /// True when id names a live proxy of this structure.
   bool contains(ProxyId id) const noexcept { return self().slots_.contains(id); }
+  /// Number of live proxies.
   std::size_t size() const noexcept { return self().slots_.size(); }
   /// Stored box. Errors: InvalidProxy.
   Aabb<T> box(ProxyId id) const {
@@ -302,12 +388,50 @@ class ProxyOps {
   }
   /// Errors: InvalidProxy.
   std::uint64_t user_data(ProxyId id) const { return self().slots_[self().slots_.check(id)].user; }
+  /// Errors: InvalidProxy.
+  Filter filter(ProxyId id) const { return self().slots_[self().slots_.check(id)].filter; }
+  /// True when the stored boxes of a and b overlap (closed) and their filters accept each other:
+  /// whether pairs() lists (a, b). Errors: InvalidProxy.
+  bool overlap(ProxyId a, ProxyId b) const {
+    const auto& sa = self().slots_[self().slots_.check(a)];
+    const auto& sb = self().slots_[self().slots_.check(b)];
+    return boxes_overlap(sa.box, sb.box) && accepts(sa.filter, sb.filter);
+  }
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the ray (t in units of
-  /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside). f may return
-  /// bool; false stops. Errors: BadRay.
+  /// |direction|, 0 <= t <= max_t, the entry parameter; 0 if the origin is inside) and whose
+  /// filter accepts `filter`. f may return bool; false stops. Errors: BadRay.
   template <class F>
-  void raycast(const Ray<T>& ray, T max_t, F&& f) const {
-    self().raycast(ray.origin, ray.direction, max_t, std::forward<F>(f));
+  void raycast(const Ray<T>& ray, T max_t, F&& f, Filter filter = Filter::everything()) const {
+    self().raycast(ray.origin, ray.direction, max_t, std::forward<F>(f), filter);
+  }
+  /// The proxy whose stored box the ray enters first (smallest t; ties: lowest slot index), or
+  /// nothing. Errors: BadRay.
+  std::optional<ProxyHit> raycast_closest(const Vec2<T>& origin, const Vec2<T>& direction, T max_t,
+                                          Filter filter = Filter::everything()) const {
+    std::optional<ProxyHit> best;
+    self().raycast(
+        origin, direction, max_t,
+        [&](ProxyId id, Calc t) {
+          if (!best || t < best->t || (t == best->t && id.index < best->id.index)) best = ProxyHit{id, t};
+        },
+        filter);
+    return best;
+  }
+  /// Calls f(ProxyId) for every proxy whose stored box contains point p (closed) and whose filter
+  /// accepts `filter`. f may return bool; false stops. Errors: BadBox (p is NaN or infinite).
+  template <class F>
+  void query_point(const Vec2<T>& p, F&& f, Filter filter = Filter::everything()) const {
+    const Expected<Aabb<T>> b = Aabb<T>::make(p, p);
+    if (!b) throw BroadphaseError(BroadphaseErrc::BadBox, b.error().what());
+    self().query(b.value(), std::forward<F>(f), filter);
+  }
+  /// Every pair of proxies whose stored boxes overlap (closed) and whose filters accept each
+  /// other, each once, a.index < b.index. Builds the list: for very many pairs use for_each_pair().
+  std::vector<ProxyPair> pairs(PairOrder order = PairOrder::Any) const {
+    std::vector<ProxyPair> out;
+    self().for_each_pair([&](ProxyId a, ProxyId b) { out.push_back(ordered_pair(a, b)); });
+    if (order == PairOrder::Sorted) std::sort(out.begin(), out.end());
+    return out;
   }
 
  private:
@@ -315,11 +439,8 @@ class ProxyOps {
   const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
 };
 
-/// Orders a pair by slot index.
-inline ProxyPair ordered_pair(ProxyId a, ProxyId b) noexcept {
-  return a.index < b.index ? ProxyPair{a, b} : ProxyPair{b, a};
-}
 
+/// Sorts a pair list when asked to.
 inline void finish_pairs(std::vector<ProxyPair>& pairs, PairOrder order) {
   if (order == PairOrder::Sorted) std::sort(pairs.begin(), pairs.end());
 }

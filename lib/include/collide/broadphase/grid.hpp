@@ -15,6 +15,7 @@
 namespace collide::broadphase {
 
 /// Spatial-hash grid broadphase over closed boxes of scalar T. Boxes are not fattened.
+/// Const members are re-entrant and may run on many threads at once (see ProxyOps).
 template <Scalar T>
 class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
  public:
@@ -33,31 +34,39 @@ class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
       throw BroadphaseError(BroadphaseErrc::BadCellSize, "cell size must be positive and finite");
   }
 
-  /// Calls f(ProxyId) for every proxy whose box meets q (closed); f may return false to stop.
+  /// Calls f(ProxyId) for every proxy whose box meets q (closed) and whose filter accepts
+  /// `filter`; f may return false to stop.
   template <class F>
-  void query(const Aabb<T>& q, F&& f) const {
+  void query(const Aabb<T>& q, F&& f, Filter filter = Filter::everything()) const {
     const Box<T> b = box_of(q);
     visit_range(widen(b.min), widen(b.max), [&](std::uint32_t s) {
-      if (!boxes_overlap(slots_[s].box, b)) return true;
+      if (!boxes_overlap(slots_[s].box, b) || !accepts(slots_[s].filter, filter)) return true;
       return call_continue(f, slots_.id(s));
     });
   }
 
   /// Calls f(ProxyId, t) for every proxy whose box meets the segment origin + t direction,
-  /// t in [0, max_t] (t = entry parameter). Errors: BadRay.
+  /// t in [0, max_t] (t = entry parameter), and whose filter accepts `filter`. Errors: BadRay.
   template <class F>
-  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
+  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f,
+               Filter filter = Filter::everything()) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
     const auto [lo, hi] = ray_bounds(r);
     visit_range(lo, hi, [&](std::uint32_t s) {
+      if (!accepts(slots_[s].filter, filter)) return true;
       const Calc t = ray_hits_box(r, slots_[s].box);
       return t < 0 || call_continue(f, slots_.id(s), t);
     });
   }
 
-  /// Every pair of proxies whose boxes overlap (closed), each once, a.index < b.index.
-  std::vector<ProxyPair> pairs(PairOrder order = PairOrder::Any) const {
-    std::vector<ProxyPair> out;
+  /// Calls f(ProxyId a, ProxyId b) once for every pair of proxies whose boxes overlap (closed) and
+  /// whose filters accept each other; f may return bool, false stops. Builds no list.
+  template <class F>
+  void for_each_pair(F&& f) const {
+    const auto report = [&](std::uint32_t x, std::uint32_t y) {
+      if (!accepts(slots_[x].filter, slots_[y].filter)) return true;
+      return call_continue(f, slots_.id(x), slots_.id(y));
+    };
     for (const auto& [key, list] : cells_) {
       const std::int64_t cx = key_x(key), cy = key_y(key);
       for (std::size_t i = 0; i < list.size(); ++i) {
@@ -68,7 +77,7 @@ class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
           if (cell_of(std::max(Calc(a.min.x()), Calc(b.min.x()))) != cx ||
               cell_of(std::max(Calc(a.min.y()), Calc(b.min.y()))) != cy)
             continue;  // reported in the cell of the intersection's lower-left corner
-          out.push_back(ordered_pair(slots_.id(list[i]), slots_.id(list[j])));
+          if (!report(list[i], list[j])) return;
         }
       }
     }
@@ -76,11 +85,9 @@ class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
       for (std::uint32_t s = 0; s < slots_.capacity(); ++s) {
         if (!slots_[s].live || s == o) continue;
         if (slots_[s].extra.oversized && s < o) continue;  // that pair is found from s
-        if (boxes_overlap(slots_[o].box, slots_[s].box)) out.push_back(ordered_pair(slots_.id(o), slots_.id(s)));
+        if (boxes_overlap(slots_[o].box, slots_[s].box) && !report(o, s)) return;
       }
     }
-    finish_pairs(out, order);
-    return out;
   }
 
  private:
@@ -113,8 +120,8 @@ class UniformGrid : public ProxyOps<UniformGrid<T>, T> {
   static std::int64_t key_x(std::uint64_t k) noexcept { return std::int32_t(std::uint32_t(k >> 32)); }
   static std::int64_t key_y(std::uint64_t k) noexcept { return std::int32_t(std::uint32_t(k)); }
 
-  ProxyId add_box(const Box<T>& b, std::uint64_t user) {
-    const ProxyId id = slots_.allocate(b, user);
+  ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {
+    const ProxyId id = slots_.allocate(b, user, filter);
     link(id.index);
     return id;
   }

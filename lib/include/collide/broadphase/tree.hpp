@@ -1,12 +1,17 @@
 #pragma once
 /// @file broadphase/tree.hpp
-/// Dynamic AABB tree: leaves hold fattened boxes so small moves cost nothing, inner nodes the union
+/// Dynamic AABB tree: leaves hold fattened boxes (stretched ahead along the last displacement
+/// when a move leaves them) so small moves cost nothing, inner nodes the union
 /// of their children; insertion descends by the smallest perimeter growth and every node on the
 /// path back up whose children's heights differ by 2 or more is rotated (the taller child moves up).
 
 #include "collide/broadphase/common.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <vector>
 
 namespace collide::broadphase {
@@ -14,6 +19,7 @@ namespace collide::broadphase {
 /// Dynamic AABB tree over closed boxes of scalar T.
 ///
 /// Pairs and queries are decided on the stored (unfattened) boxes: fattening only adds candidates.
+/// Const members are re-entrant and may run on many threads at once (see ProxyOps).
 template <Scalar T>
 class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
  public:
@@ -22,82 +28,126 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   /// the new box inside the fat box does not touch the tree. Errors: BadMargin.
   explicit DynamicTree(T margin = T(0.1)) : margin_(checked_margin(margin)) {}
 
+  /// Adds one proxy per box (user data first_user + i, one filter for all) and returns their
+  /// handles in order. Into an empty tree the leaves are built top down (median split on the
+  /// longer axis of the box centres), faster than adding one by one and as good a tree;
+  /// otherwise they are inserted one by one. Errors: TooManyProxies (nothing is added).
+  std::vector<ProxyId> add_batch(std::span<const Aabb<T>> boxes, std::uint64_t first_user = 0, Filter filter = {}) {
+    std::vector<ProxyId> ids;
+    ids.reserve(boxes.size());
+    if (slots_.capacity() + boxes.size() >= std::numeric_limits<std::uint32_t>::max() - 1)
+      throw BroadphaseError(BroadphaseErrc::TooManyProxies, "too many proxies");
+    if (root_ >= 0 || boxes.size() < 2) {
+      for (std::size_t i = 0; i < boxes.size(); ++i) ids.push_back(add_box(box_of(boxes[i]), first_user + i, filter));
+      return ids;
+    }
+    nodes_.reserve(nodes_.size() + 2 * boxes.size());
+    slots_.reserve(slots_.capacity() + boxes.size());
+    std::vector<Centred> leaves;
+    leaves.reserve(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      const Box<T> b = box_of(boxes[i]);
+      const ProxyId id = slots_.allocate(b, first_user + i, filter);
+      const std::int32_t leaf = alloc_node();
+      nodes_[leaf].box = fattened(b, margin_);
+      nodes_[leaf].slot = id.index;
+      slots_[id.index].extra.leaf = leaf;
+      leaves.push_back({{Calc(b.min.x()) + Calc(b.max.x()), Calc(b.min.y()) + Calc(b.max.y())}, leaf});
+      ids.push_back(id);
+    }
+    root_ = build_top_down(leaves.data(), leaves.data() + leaves.size());
+    nodes_[root_].parent = -1;
+    return ids;
+  }
+
+  /// Moves like move() and tells whether the proxy left its fat box (and got a new one), so that
+  /// a caller caching fat-box neighbours (PairTracker) knows whose to refresh. Errors: InvalidProxy.
+  bool move_fat(ProxyId id, const Aabb<T>& box) { return move_box(id, box_of(box)); }
+
+  /// Calls f(ProxyId) for every other proxy whose fat box meets id's fat box (closed): a superset
+  /// of the proxies whose stored boxes meet id's. Errors: InvalidProxy.
+  template <class F>
+  void query_fat(ProxyId id, F&& f) const {
+    const std::uint32_t self = slots_.check(id);
+    const Box<T> fat = nodes_[slots_[self].extra.leaf].box;
+    visit([&](const Box<T>& b) { return boxes_overlap(b, fat); },
+          [&](std::uint32_t s) { return s == self || call_continue(f, slots_.id(s)); });
+  }
+
   /// Fat box of a proxy (contains box(id)). Errors: InvalidProxy.
   Aabb<T> fat_box(ProxyId id) const {
     const Box<T>& b = nodes_[slots_[slots_.check(id)].extra.leaf].box;
     return Aabb<T>::make(b.min, b.max).value();
   }
 
-  /// Calls f(ProxyId) for every proxy whose stored box meets q (closed). f may return bool;
-  /// false stops the query.
+  /// Calls f(ProxyId) for every proxy whose stored box meets q (closed) and whose filter accepts
+  /// `filter`. f may return bool; false stops the query. Re-entrant and thread-safe (see ProxyOps).
   template <class F>
-  void query(const Aabb<T>& q, F&& f) const {
-    visit_overlapping(box_of(q), [&](std::uint32_t s) { return call_continue(f, slots_.id(s)); });
+  void query(const Aabb<T>& q, F&& f, Filter filter = Filter::everything()) const {
+    const Box<T> qb = box_of(q);
+    visit([&](const Box<T>& b) { return boxes_overlap(b, qb); },
+          [&](std::uint32_t s) {
+            if (!boxes_overlap(slots_[s].box, qb) || !accepts(slots_[s].filter, filter)) return true;
+            return call_continue(f, slots_.id(s));
+          });
   }
 
   /// Calls f(ProxyId, t) for every proxy whose stored box meets the segment origin + t direction,
-  /// t in [0, max_t]; t is the entry parameter (0 if origin is inside). f may return bool; false
-  /// stops. Errors: BadRay.
+  /// t in [0, max_t], and whose filter accepts `filter`; t is the entry parameter (0 if origin is
+  /// inside). f may return bool; false stops. Errors: BadRay.
   template <class F>
-  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f) const {
+  void raycast(const Vec2<T>& origin, const Vec2<T>& direction, T max_t, F&& f,
+               Filter filter = Filter::everything()) const {
     const RaySegment<T> r = make_ray(origin, direction, max_t);
-    if (root_ < 0) return;
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const Node& n = nodes_[stack_.back()];
-      stack_.pop_back();
-      if (ray_hits_box(r, n.box) < 0) continue;
-      if (n.leaf()) {
-        const Calc t = ray_hits_box(r, slots_[n.slot].box);
-        if (t >= 0 && !call_continue(f, slots_.id(n.slot), t)) return;
-      } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
-      }
-    }
+    visit([&](const Box<T>& b) { return ray_hits_box(r, b) >= 0; },
+          [&](std::uint32_t s) {
+            if (!accepts(slots_[s].filter, filter)) return true;
+            const Calc t = ray_hits_box(r, slots_[s].box);
+            return t < 0 || call_continue(f, slots_.id(s), t);
+          });
   }
 
-  /// Every pair of proxies whose stored boxes overlap (closed), each once, a.index < b.index.
-  std::vector<ProxyPair> pairs(PairOrder order = PairOrder::Any) const {
-    std::vector<ProxyPair> out;
-    if (root_ < 0) return out;
+  /// Calls f(ProxyId a, ProxyId b) once for every pair of proxies whose stored boxes overlap
+  /// (closed) and whose filters accept each other; f may return bool, false stops. Builds no
+  /// list, so any number of pairs can be visited in constant memory beyond the traversal stack.
+  template <class F>
+  void for_each_pair(F&& f) const {
+    if (root_ < 0) return;
     struct Job {
       std::int32_t a, b;
     };
-    std::vector<Job> jobs;
-    jobs.push_back({root_, root_});
+    LocalStack<Job> jobs;
+    jobs.push({root_, root_});
     while (!jobs.empty()) {
-      const Job j = jobs.back();
-      jobs.pop_back();
+      const Job j = jobs.pop();
       const Node& a = nodes_[j.a];
       if (j.a == j.b) {
         if (a.leaf()) continue;
-        jobs.push_back({a.child1, a.child1});
-        jobs.push_back({a.child2, a.child2});
-        jobs.push_back({a.child1, a.child2});
+        jobs.push({a.child1, a.child1});
+        jobs.push({a.child2, a.child2});
+        jobs.push({a.child1, a.child2});
         continue;
       }
       const Node& b = nodes_[j.b];
       if (!boxes_overlap(a.box, b.box)) continue;
       if (a.leaf() && b.leaf()) {
+        const auto& sa = slots_[a.slot];
+        const auto& sb = slots_[b.slot];
 #if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 2
         // Planted fault 2 (tests only): the fat boxes decide, so fattening adds false pairs.
-        if (boxes_overlap(a.box, b.box))
+        const bool hit = boxes_overlap(a.box, b.box);
 #else
-        if (boxes_overlap(slots_[a.slot].box, slots_[b.slot].box))
+        const bool hit = boxes_overlap(sa.box, sb.box);
 #endif
-          out.push_back(ordered_pair(slots_.id(a.slot), slots_.id(b.slot)));
+        if (hit && accepts(sa.filter, sb.filter) && !call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
       } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
-        jobs.push_back({a.child1, j.b});
-        jobs.push_back({a.child2, j.b});
+        jobs.push({a.child1, j.b});
+        jobs.push({a.child2, j.b});
       } else {
-        jobs.push_back({j.a, b.child1});
-        jobs.push_back({j.a, b.child2});
+        jobs.push({j.a, b.child1});
+        jobs.push({j.a, b.child2});
       }
     }
-    finish_pairs(out, order);
-    return out;
   }
 
   /// Height of the tree (0 for one leaf, -1 when empty).
@@ -157,26 +207,58 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return 2 * ((Calc(b.max.x()) - Calc(b.min.x())) + (Calc(b.max.y()) - Calc(b.min.y())));
   }
 
-  template <class F>
-  void visit_overlapping(const Box<T>& q, F&& f) const {
+  /// Depth-first walk: descends into nodes whose (fat) box passes `enter`, calls leaf(slot) at
+  /// each leaf reached; leaf returning false stops. The stack is local to the call.
+  template <class Enter, class Leaf>
+  void visit(Enter&& enter, Leaf&& leaf) const {
     if (root_ < 0) return;
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const Node& n = nodes_[stack_.back()];
-      stack_.pop_back();
-      if (!boxes_overlap(n.box, q)) continue;
+    LocalStack<std::int32_t> stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+      const Node& n = nodes_[stack.pop()];
+      if (!enter(n.box)) continue;
       if (n.leaf()) {
-        if (boxes_overlap(slots_[n.slot].box, q) && !f(n.slot)) return;
+        if (!leaf(n.slot)) return;
       } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
+        stack.push(n.child1);
+        stack.push(n.child2);
       }
     }
   }
 
-  ProxyId add_box(const Box<T>& b, std::uint64_t user) {
-    const ProxyId id = slots_.allocate(b, user);
+  /// A leaf and twice its box centre, for the top-down build.
+  struct Centred {
+    Calc c[2];
+    std::int32_t leaf;
+  };
+
+  /// Builds a subtree over leaves [first, last) (at least one): splits at the median centre on
+  /// the longer axis of the centres' extent. Returns its root.
+  std::int32_t build_top_down(Centred* first, Centred* last) {
+    if (last - first == 1) return first->leaf;
+    Calc lo[2] = {first->c[0], first->c[1]}, hi[2] = {first->c[0], first->c[1]};
+    for (const Centred* i = first + 1; i != last; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        lo[k] = std::min(lo[k], i->c[k]);
+        hi[k] = std::max(hi[k], i->c[k]);
+      }
+    }
+    const int axis = (hi[0] - lo[0]) >= (hi[1] - lo[1]) ? 0 : 1;
+    Centred* mid = first + (last - first) / 2;
+    std::nth_element(first, mid, last, [axis](const Centred& a, const Centred& b) { return a.c[axis] < b.c[axis]; });
+    const std::int32_t left = build_top_down(first, mid), right = build_top_down(mid, last);
+    const std::int32_t parent = alloc_node();
+    Node& n = nodes_[parent];
+    n.child1 = left;
+    n.child2 = right;
+    n.box = merged(nodes_[left].box, nodes_[right].box);
+    n.height = 1 + std::max(nodes_[left].height, nodes_[right].height);
+    nodes_[left].parent = nodes_[right].parent = parent;
+    return parent;
+  }
+
+  ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {
+    const ProxyId id = slots_.allocate(b, user, filter);
     const std::int32_t leaf = alloc_node();
     nodes_[leaf].box = fattened(b, margin_);
     nodes_[leaf].slot = id.index;
@@ -185,14 +267,34 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return id;
   }
 
-  void move_box(ProxyId id, const Box<T>& b) {
+  /// Returns true when the leaf was reinserted with a new fat box.
+  bool move_box(ProxyId id, const Box<T>& b) {
     const std::uint32_t s = slots_.check(id);
+    const Box<T> old = slots_[s].box;
     slots_[s].box = b;
     const std::int32_t leaf = slots_[s].extra.leaf;
-    if (box_contains(nodes_[leaf].box, b)) return;
+    if (box_contains(nodes_[leaf].box, b)) return false;
     remove_leaf(leaf);
-    nodes_[leaf].box = fattened(b, margin_);
+    nodes_[leaf].box = predicted(b, old);
     insert_leaf(leaf);
+    return true;
+  }
+
+  /// The fat box of a proxy that moved from `old` to `b`: grown by the margin, then stretched
+  /// kLookAhead steps of the same displacement ahead (at most the box's extent plus the margin
+  /// per axis, so a teleport does not leave a huge box), so that steady motion leaves it rarely.
+  Box<T> predicted(const Box<T>& b, const Box<T>& old) const noexcept {
+    Box<T> fat = fattened(b, margin_);
+    for (int i = 0; i < 2; ++i) {
+      const Calc cap = Calc(b.max[i]) - Calc(b.min[i]) + Calc(margin_);
+      const Calc ahead = std::clamp(kLookAhead * (Calc(b.min[i]) - Calc(old.min[i])), -cap, cap);
+      const Calc reach = ahead < 0 ? Calc(fat.min[i]) + ahead : Calc(fat.max[i]) + ahead;
+      if (!(std::fabs(reach) <= Calc(max_magnitude<T>()))) continue;  // keep the plain fat box
+      const T moved = T(reach);
+      if (ahead < 0) fat.min[i] = std::min(fat.min[i], moved);
+      if (ahead > 0) fat.max[i] = std::max(fat.max[i], moved);
+    }
+    return fat;
   }
 
   std::int32_t alloc_node() {
@@ -327,12 +429,14 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     return up;
   }
 
+  /// How many steps of the last displacement a reinserted fat box reaches ahead.
+  static constexpr Calc kLookAhead = 4;
+
   T margin_;
   Slots<T, Extra> slots_;
   std::vector<Node> nodes_;
   std::vector<std::int32_t> free_nodes_;
   std::int32_t root_ = -1;
-  mutable std::vector<std::int32_t> stack_;
 };
 
 }  // namespace collide::broadphase

@@ -1,9 +1,13 @@
 #pragma once
 /// @file broadphase/world.hpp
-/// The lecture's hierarchy end to end over a list of shapes: a broadphase on the shapes'
-/// conservative bounding boxes proposes pairs, the exact pair decisions (overlaps, contact) settle them.
+/// The lecture's hierarchy end to end: a broadphase on the shapes' conservative bounding boxes
+/// proposes pairs, the exact pair decisions (overlaps, contact) settle them. World keeps bodies
+/// between steps and reports contacts that began and ended; the find_* helpers below answer once
+/// for a list of shapes (they build a broadphase on every call).
 
+#include "collide/broadphase/events.hpp"
 #include "collide/broadphase/tree.hpp"
+#include "collide/contains.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"
 #include "collide/registry.hpp"
@@ -13,6 +17,7 @@
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <unordered_set>
 #include <vector>
 
 namespace collide::broadphase {
@@ -60,6 +65,17 @@ std::vector<ShapeContact<T>> find_contacts(std::span<const Shape<T>> shapes, BP 
   return out;
 }
 
+/// bounds(shape) padded by 16 eps_T of its scale: a hit that collide::raycast reports within its
+/// own rounding tolerance just outside a shape still finds that shape's box. Contains bounds().
+template <Scalar T>
+Aabb<T> raycast_bounds(const Shape<T>& shape) {
+  const Aabb<T> b = bounds(shape);
+  const T scale = std::max(b.min().cwiseAbs().maxCoeff(), b.max().cwiseAbs().maxCoeff());
+  const T pad = T(16) * std::numeric_limits<T>::epsilon() * scale + std::numeric_limits<T>::min();
+  const Expected<Aabb<T>> padded = Aabb<T>::make((b.min().array() - pad).matrix(), (b.max().array() + pad).matrix());
+  return padded ? padded.value() : b;
+}
+
 /// The first shape a ray meets: index into the input list and the hit.
 template <Scalar T>
 struct ShapeHit {
@@ -73,16 +89,7 @@ struct ShapeHit {
 template <Scalar T, class BP = DynamicTree<T>>
 std::optional<ShapeHit<T>> raycast_shapes(std::span<const Shape<T>> shapes, const Ray<T>& ray, T max_t,
                                           BP bp = BP()) {
-  // Boxes padded by 16 eps_T of their scale: a hit that collide::raycast reports within its own
-  // rounding tolerance just outside a shape must still find that shape's box.
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    const Aabb<T> b = bounds(shapes[i]);
-    const T scale = std::max(b.min().cwiseAbs().maxCoeff(), b.max().cwiseAbs().maxCoeff());
-    const T pad = T(16) * std::numeric_limits<T>::epsilon() * scale + std::numeric_limits<T>::min();
-    const Expected<Aabb<T>> padded =
-        Aabb<T>::make((b.min().array() - pad).matrix(), (b.max().array() + pad).matrix());
-    bp.add(padded ? padded.value() : b, i);
-  }
+  for (std::size_t i = 0; i < shapes.size(); ++i) bp.add(raycast_bounds(shapes[i]), i);
   std::optional<ShapeHit<T>> best;
   bp.raycast(ray, max_t, [&](ProxyId id, Calc) {
     const std::size_t i = bp.user_data(id);
@@ -91,5 +98,156 @@ std::optional<ShapeHit<T>> raycast_shapes(std::span<const Shape<T>> shapes, cons
   });
   return best;
 }
+
+/// A body of a World met by a ray: its handle and the hit.
+template <Scalar T>
+struct BodyHit {
+  ProxyId body;   ///< the body
+  RayHit<T> hit;  ///< where the ray meets its shape
+};
+
+/// A persistent world of bodies: each a world-space shape with user data and a filter, kept in a
+/// broadphase BP (DynamicTree<T> by default) on its padded bounding box. Add, move and remove
+/// bodies, then step(): it reports the pairs of bodies whose shapes began or stopped overlapping
+/// (exact overlaps(), touching counts; filters applied) since the last step, each once. Work per
+/// step is proportional to the bodies changed and their broadphase partners. Queries by point,
+/// by any shape and by ray run against the current shapes at any time.
+///
+/// Thread safety: const members may run on many threads at once, and from each other's
+/// callbacks, while no thread calls a non-const member (add, move, remove, set_filter, step).
+template <Scalar T, class BP = DynamicTree<T>>
+class World {
+ public:
+  /// A world whose bodies are indexed by bp (which must be empty).
+  explicit World(BP bp = BP()) : tracker_(std::move(bp)) {}
+
+  /// Adds a body; its contacts begin at the next step. Returns its handle.
+  ProxyId add(const Shape<T>& shape, std::uint64_t user = 0, Filter filter = {}) {
+    const ProxyId id = tracker_.add(raycast_bounds(shape), user, filter);
+    if (id.index >= shapes_.size()) shapes_.resize(std::size_t(id.index) + 1);
+    shapes_[id.index] = shape;
+    mark(id);
+    return id;
+  }
+  /// Replaces a body's shape (its new world-space shape). Errors: InvalidProxy.
+  void move(ProxyId id, const Shape<T>& shape) {
+    tracker_.move(id, raycast_bounds(shape));
+    shapes_[id.index] = shape;
+    mark(id);
+  }
+  /// Replaces a body's filter. Errors: InvalidProxy.
+  void set_filter(ProxyId id, Filter filter) {
+    tracker_.set_filter(id, filter);
+    mark(id);
+  }
+  /// Removes a body; its contacts end at the next step. Errors: InvalidProxy.
+  void remove(ProxyId id) {
+    tracker_.remove(id);
+    shapes_[id.index].reset();
+  }
+  /// True when id names a live body.
+  bool contains(ProxyId id) const noexcept { return tracker_.structure().contains(id); }
+  /// Number of live bodies.
+  std::size_t size() const noexcept { return tracker_.structure().size(); }
+  /// The body's shape. Errors: InvalidProxy.
+  const Shape<T>& shape(ProxyId id) const {
+    tracker_.structure().box(id);  // checks the handle
+    return *shapes_[id.index];
+  }
+  /// Errors: InvalidProxy.
+  std::uint64_t user_data(ProxyId id) const { return tracker_.structure().user_data(id); }
+
+  /// Contacts that began and ended since the last step, each once (handles as in PairEvents).
+  /// The returned lists stay valid until the next step.
+  const PairEvents& step() {
+    tracker_.update(box_events_);
+    events_.clear();
+    for (const ProxyPair& p : box_events_.ended)
+      if (touching_.erase(key(p.a.index, p.b.index)) != 0) events_.ended.push_back(p);
+    std::sort(changed_.begin(), changed_.end());
+    for (const std::uint32_t i : changed_) {
+      if (!contains(ids_[i])) continue;
+      tracker_.for_each_partner(ids_[i], [&](ProxyId o) {
+        if (changed_mark_[o.index] && o.index < i) return;  // settled from o's side
+        const bool now = overlaps(*shapes_[i], *shapes_[o.index]);
+        const std::uint64_t k = key(i, o.index);
+        if (now && touching_.insert(k).second) events_.began.push_back(ordered_pair(ids_[i], o));
+        if (!now && touching_.erase(k) != 0) events_.ended.push_back(ordered_pair(ids_[i], o));
+      });
+    }
+    for (const std::uint32_t i : changed_) changed_mark_[i] = 0;
+    changed_.clear();
+    return events_;
+  }
+
+  /// Calls f(ProxyId a, ProxyId b) for every pair of bodies in contact as of the last step.
+  template <class F>
+  void for_each_contact(F&& f) const {
+    for (const std::uint64_t k : touching_) {
+      const auto a = std::uint32_t(k >> 32), b = std::uint32_t(k);
+      f(ids_[a], ids_[b]);
+    }
+  }
+
+  /// Calls f(ProxyId) for every body whose shape contains p (closed) and whose filter accepts
+  /// `filter`. f may return bool; false stops. Errors: BadBox (p NaN or infinite).
+  template <class F>
+  void query_point(const Vec2<T>& p, F&& f, Filter filter = Filter::everything()) const {
+    const auto& bp = tracker_.structure();
+    bp.query_point(
+        p, [&](ProxyId id) { return !collide::contains(*shapes_[id.index], p) || call_continue(f, id); }, filter);
+  }
+  /// Calls f(ProxyId) for every body whose shape overlaps() `shape` (any kind, world space) and
+  /// whose filter accepts `filter`; a circle query is query_shape(Circle). f may return bool.
+  template <class F>
+  void query_shape(const Shape<T>& shape, F&& f, Filter filter = Filter::everything()) const {
+    const auto& bp = tracker_.structure();
+    bp.query(
+        bounds(shape), [&](ProxyId id) { return !overlaps(shape, *shapes_[id.index]) || call_continue(f, id); },
+        filter);
+  }
+  /// The body whose shape the ray meets first (smallest t; ties: lowest slot index) among those
+  /// whose filter accepts `filter`, or nothing. Errors: BadRay.
+  std::optional<BodyHit<T>> raycast(const Ray<T>& ray, T max_t, Filter filter = Filter::everything()) const {
+    std::optional<BodyHit<T>> best;
+    tracker_.structure().raycast(
+        ray, max_t,
+        [&](ProxyId id, Calc) {
+          const auto h = collide::raycast(*shapes_[id.index], ray, max_t);
+          if (h && (!best || h->t < best->hit.t || (h->t == best->hit.t && id.index < best->body.index)))
+            best = BodyHit<T>{id, *h};
+        },
+        filter);
+    return best;
+  }
+  /// The broadphase, for box queries.
+  const BP& broadphase() const noexcept { return tracker_.structure(); }
+
+ private:
+  static std::uint64_t key(std::uint32_t a, std::uint32_t b) noexcept {
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t(a) << 32) | b;
+  }
+  void mark(ProxyId id) {
+    const std::uint32_t i = id.index;
+    if (i >= ids_.size()) {
+      ids_.resize(std::size_t(i) + 1);
+      changed_mark_.resize(std::size_t(i) + 1, 0);
+    }
+    ids_[i] = id;
+    if (!changed_mark_[i]) {
+      changed_mark_[i] = 1;
+      changed_.push_back(i);
+    }
+  }
+
+  PairTracker<BP, T> tracker_;
+  std::vector<std::optional<Shape<T>>> shapes_;
+  std::vector<ProxyId> ids_;
+  std::vector<std::uint32_t> changed_;
+  std::vector<char> changed_mark_;
+  std::unordered_set<std::uint64_t> touching_;
+  PairEvents box_events_, events_;
+};
 
 }  // namespace collide::broadphase
