@@ -32,7 +32,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 KINDS = ["circle", "aabb", "obb", "capsule", "polygon", "compound"]
 LAWS = ["agreement", "symmetry", "translation", "rotation", "resolution", "bounds", "raycast", "hierarchy",
-        "representation", "contact", "distance", "rejection"]
+        "representation", "contact", "distance", "rejection", "contains", "touching"]
 RELATIONS = ["separated", "touching", "overlapping", "contained"]
 
 

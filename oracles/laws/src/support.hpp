@@ -100,6 +100,47 @@ bool is_compound(const Shape<T>& s) {
   return std::holds_alternative<Compound<T>>(s);
 }
 
+/// The primitives of a shape: a compound's children, or the shape itself.
+template <Scalar T>
+std::vector<Primitive<T>> primitives_of(const Shape<T>& s) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children();
+  return {std::visit(
+      [](const auto& x) -> Primitive<T> {
+        using S = std::remove_cvref_t<decltype(x)>;
+        if constexpr (std::is_same_v<S, Compound<T>>) {
+          return x.children().front();  // unreachable: handled above
+        } else {
+          return x;
+        }
+      },
+      s)};
+}
+
+/// The primitive has interior points (no zero radius, extent or width).
+template <Scalar T>
+bool has_interior(const Primitive<T>& p) {
+  return std::visit(
+      [](const auto& s) {
+        using S = std::remove_cvref_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Circle<T>> || std::is_same_v<S, Capsule<T>>) {
+          return s.radius() > 0;
+        } else if constexpr (std::is_same_v<S, Aabb<T>>) {
+          return s.min().x() < s.max().x() && s.min().y() < s.max().y();
+        } else if constexpr (std::is_same_v<S, Obb<T>>) {
+          return s.half_extents().x() > 0 && s.half_extents().y() > 0;
+        } else {
+          return true;  // a stored polygon is never collinear
+        }
+      },
+      p);
+}
+
+/// p is within d of the boundary of the closed primitive s (inside or outside), exactly.
+template <Scalar T>
+bool near_boundary(const Primitive<T>& s, const Vec2<double>& p, double d) {
+  return oracle::compare_boundary_distance(s, p, d) <= 0;
+}
+
 /// p is farther than d from the closed shape s, exactly. Asked through the point's distance to
 /// the boundary rather than to a zero-radius circle at p: a point of a shape near the range's
 /// edge (a ray hit, a contact point) may lie beyond max_magnitude, where no Circle can be built.
