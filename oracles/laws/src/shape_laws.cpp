@@ -239,17 +239,31 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       return v;
     }
     const Vec2c n = hit->normal.template cast<double>();
+    if (d == Vec2c::Zero()) {
+      // A zero direction hits only where it starts, with normal (0, 0) (raycast.hpp).
+      if (n != Vec2c::Zero()) fail("normal (0, 0) for a zero direction", "normal " + vec(hit->normal));
+      return v;
+    }
     if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) {
       fail("a unit hit normal", "normal " + vec(hit->normal) + " (|n| = " + num(n.norm()) + ")");
       return v;
     }
-    if (t == 0) {
-      if ((n + d / len).cwiseAbs().maxCoeff() > 8 * detail::eps<T>())
-        fail("normal -direction / |direction| at t = 0", "normal " + vec(hit->normal));
+    // At t = 0 the origin is on the shape (within the bound): -direction / |direction| as for an
+    // origin inside, or the outward normal where the ray enters.
+    const Vec2c dm = d / d.cwiseAbs().maxCoeff();  // exact scaling first: |d|^2 may underflow
+    const Vec2c u = dm / dm.norm();
+    const bool backward = t == 0 && (n + u).cwiseAbs().maxCoeff() <= 8 * detail::eps<T>();
+    // The normal is judged where the ray really enters: 4 bounds past the point it is deeper than
+    // the bound inside. A ray grazing the shape within the bound, or a sliver thinner than that,
+    // has no reliable face.
+    if (!deep_inside(s, Vec2c(p + u * (4 * bound)), bound)) {
+      v.account += "; normal not judged (grazing within the bound)";
       return v;
     }
-    if (!outward_normal(s, p, n, bound)) {
-      fail("the outward normal of the boundary at the hit point", "normal " + vec(hit->normal));
+    if (!backward && !outward_normal(s, p, n, bound)) {
+      fail(std::string("the outward normal of the boundary at the hit point") +
+               (t == 0 ? " (or -direction / |direction| at t = 0)" : ""),
+           "normal " + vec(hit->normal));
       return v;
     }
   } catch (const std::exception& e) {
