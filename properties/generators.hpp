@@ -347,4 +347,51 @@ T gen_raw_value() {
   return T(grid(-16, 16) / 4);
 }
 
+/// Values for the rejection law aimed at one named error of `kind` on purpose (or valid), so
+/// that each validation rule is met in every run, whatever the seed: a non-finite or out-of-range
+/// value at any index, a negative radius or extent, min > max, a zero axis, and for polygons too
+/// few distinct vertices, all collinear, a reflex vertex, a side doubling back, a star winding
+/// twice, or a valid clockwise square. Layout as in laws::rejection.
+template <Scalar T>
+std::vector<T> gen_aimed_values(ShapeKind kind) {
+  auto v = [](std::initializer_list<double> xs) {
+    std::vector<T> out;
+    for (double x : xs) out.push_back(T(x));
+    return out;
+  };
+  const double a = grid(1, 8), b = grid(1, 8);
+  std::vector<T> out;
+  switch (kind) {
+    case ShapeKind::Circle:
+    case ShapeKind::Compound: out = v({a, b, *rc::gen::element(a, -a, 0.0)}); break;
+    case ShapeKind::Aabb: out = *rc::gen::arbitrary<bool>() ? v({a, b, -a, b + 1}) : v({a, b, a + 1, b - 1 - grid(0, 4)}); break;
+    case ShapeKind::Obb: {
+      const int style = *rc::gen::inRange(0, 3);
+      out = style == 0 ? v({a, b, -a, b, 1, 0}) : style == 1 ? v({a, b, a, -b, 0, 1}) : v({a, b, a, b, 0, 0});
+      break;
+    }
+    case ShapeKind::Capsule: out = v({a, b, b, a, *rc::gen::element(a, -a, 0.0)}); break;
+    case ShapeKind::Polygon: {
+      const std::vector<std::vector<double>> polygons = {
+          {0, 0, a, 0, 0, 0},                                  // too few distinct vertices
+          {0, 0, a, a, 2 * a, 2 * a, 3 * a, 3 * a},            // all collinear
+          {0, 0, 4 * a, 0, a, a, 0, 4 * a},                    // reflex vertex (a dart)
+          {0, 0, 4 * a, 0, 2 * a, 0, 4 * a, 4 * a},            // doubling back along a side
+          {0, 4, 2, -3, -4, 1, 4, 1, -2, -3},                  // a star: winds twice
+          {0, 0, 0, a, a, a, a, 0},                            // clockwise square (valid)
+      };
+      const auto& poly = *rc::gen::elementOf(polygons);
+      for (double x : poly) out.push_back(T(x));
+      break;
+    }
+  }
+  // Sometimes a non-finite or out-of-range value replaces one of them.
+  if (*rc::gen::inRange(0, 4) == 0) {
+    const std::vector<T> bad = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                                T(max_magnitude<T>() * T(2)), -T(max_magnitude<T>() * T(2))};
+    out[std::size_t(*rc::gen::inRange(0, int(out.size())))] = *rc::gen::elementOf(bad);
+  }
+  return out;
+}
+
 }  // namespace collide::props

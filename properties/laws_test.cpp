@@ -326,7 +326,11 @@ void register_kind_laws(ShapeKind k) {
   reg("rejection", [=] {
     const int n = k == ShapeKind::Polygon ? 2 * *rc::gen::inRange(0, 6) : k == ShapeKind::Compound ? 3 * *rc::gen::inRange(0, 3) : 6;
     std::vector<T> values;
-    for (int i = 0; i < n; ++i) values.push_back(gen_raw_value<T>());
+    if (*rc::gen::arbitrary<bool>()) {
+      values = gen_aimed_values<T>(k);
+    } else {
+      for (int i = 0; i < n; ++i) values.push_back(gen_raw_value<T>());
+    }
     const laws::Verdict v = laws::rejection<T>(k, std::span<const T>(values));
     g_tally.record(v, false);
     RC_TAG(v.account.substr(0, v.account.find(':')));

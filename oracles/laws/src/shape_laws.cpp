@@ -219,8 +219,14 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       return v;
     }
     if (inside) {
-      if (t != 0 && deep_inside(s, o, bound))
+      if (t != 0 && deep_inside(s, o, bound)) {
         fail("t = 0 for an origin inside the shape (deeper than the bound)", "t " + num(t));
+      } else if (d != Vec2c::Zero() && deep_inside(s, o, bound)) {
+        const Vec2c dm = d / d.cwiseAbs().maxCoeff();  // exact scaling first: |d|^2 may underflow
+        const Vec2c n = hit->normal.template cast<double>();
+        if ((n + dm / dm.norm()).cwiseAbs().maxCoeff() > 8 * detail::eps<T>())
+          fail("normal -direction / |direction| for an origin inside", "normal " + vec(hit->normal));
+      }
       return v;
     }
     // t is returned in T: its rounding, relative or (when t underflows T) absolute, moves o + t d.
