@@ -210,17 +210,7 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
   entries.push_back({"hierarchy", true, [=] {
                        // The compound: a's primitives plus up to two more children nearby.
                        const auto [a, b] = gen_pair<T>(ka, kb);
-                       std::vector<Primitive<T>> children;
-                       if (const auto* c = std::get_if<Compound<T>>(&a)) {
-                         children = c->children();
-                       } else {
-                         std::visit(
-                             [&](const auto& x) {
-                               using S = std::remove_cvref_t<decltype(x)>;
-                               if constexpr (!std::is_same_v<S, Compound<T>>) children.emplace_back(x);
-                             },
-                             a);
-                       }
+                       std::vector<Primitive<T>> children = primitives_in(a);
                        const int extra = *rc::gen::inRange(0, 3);
                        for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
                        const Shape<T> comp = Compound<T>(std::move(children));
@@ -315,6 +305,22 @@ void register_kind_laws(ShapeKind k) {
       c.max_t = max_t;
     });
   });
+  if (k == ShapeKind::Compound) {
+    // A scene of up to 8 shapes of any kind placed against each other.
+    reg("scene", [=] {
+      std::vector<Primitive<T>> all;
+      const int pairs = *rc::gen::inRange(1, 5);
+      for (int i = 0; i < pairs; ++i) {
+        const auto ka = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
+        const auto kb = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
+        const auto [a, b] = gen_pair<T>(ka, kb);
+        for (const Shape<T>* s : {&a, &b})
+          for (const Primitive<T>& p : primitives_in(*s)) all.push_back(p);
+      }
+      const Shape<T> group = Compound<T>(std::move(all));
+      judge<T>(laws::scene(group), "scene", kind, group, std::nullopt, false);
+    });
+  }
   reg("contains", [=] {
     const auto [a, b] = gen_pair<T>(k, k);
     const Vec2<T> p = gen_point_near(a);

@@ -9,7 +9,7 @@ usage: properties/run.py [--build-dir D] [--cases N] [--seed S] [--pair P] [--la
 --seed S     RapidCheck seed (default: chosen here and printed, so a run can be repeated).
 --pair P     one pair, e.g. circle_obb (either order), or a kind for the single-shape laws.
 --law L      one law family (agreement, symmetry, translation, rotation, resolution, bounds,
-             raycast, hierarchy, representation, contact, distance, rejection, contains, touching).
+             raycast, hierarchy, representation, contact, distance, rejection, contains, touching, scene).
 --minutes M  time budget for the whole run (default 3).
 
 Prints a table (cases, relation distribution, disagreements allowed within the tolerance band
@@ -33,7 +33,7 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 KINDS = ["circle", "aabb", "obb", "capsule", "polygon", "compound"]
 LAWS = ["agreement", "symmetry", "translation", "rotation", "resolution", "bounds", "raycast", "hierarchy",
-        "representation", "contact", "distance", "rejection", "contains", "touching"]
+        "representation", "contact", "distance", "rejection", "contains", "touching", "scene"]
 RELATIONS = ["separated", "touching", "overlapping", "contained"]
 
 
@@ -138,7 +138,7 @@ def main() -> int:
     for r in rows:
         d = r["distribution"]
         n = max(r["cases"], 1)
-        pct = [f"{100 * d[k] / n:3.0f}%" if r["law"] not in ("bounds", "raycast", "rejection") else "   -" for k in RELATIONS]
+        pct = [f"{100 * d[k] / n:3.0f}%" if r["law"] not in ("bounds", "raycast", "rejection", "contains", "scene") else "   -" for k in RELATIONS]
         band = f"{r['disagreements']} / {r['disagreement_ceiling']}"
         print(f"{r['law']:15} {r['pair']:19} {r['scalar']:6} {r['cases']:6}  {' '.join(pct)}  {band:>45}"
               f"  {r['status'].upper()} {r['reason']}")

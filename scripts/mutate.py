@@ -186,23 +186,39 @@ def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[st
                        check=True, env=env, stdout=subprocess.DEVNULL)
     targets = subprocess.run(["ninja", "-C", str(out), "-t", "targets", "all"], capture_output=True, text=True,
                              check=True).stdout
-    names = sorted({m.group(1) for line in targets.splitlines()
-                    if (m := re.match(r"^(?:\S*/)?(collide_properties|collide_replay_cases|fuzz_replay_\w+|unit_\w+):", line))})
-    print(f"mutate: building {len(names)} check programs in {out}", flush=True)
+    # Every linked program of the three layers: the property suites (properties/, the planted-fault
+    # copy and the picture tool aside), the replays (regression cases, fuzz corpora) and unit tests.
+    programs: dict[str, str] = {}
+    for line in targets.splitlines():
+        path, _, rule = line.partition(": ")
+        if "EXECUTABLE_LINKER" not in rule:
+            continue
+        name = path.rsplit("/", 1)[-1]
+        if not re.fullmatch(r"[A-Za-z0-9_-]+", name):  # side outputs of the link step (test lists)
+            continue
+        if path.startswith("properties/") and "planted" not in name and name != "collide_draw_cases":
+            programs[path] = "properties"
+        elif name == "collide_replay_cases" or name.startswith("fuzz_replay_"):
+            programs[path] = "replays"
+        elif path.startswith("tests/unit/"):
+            programs[path] = "unit"
+    print(f"mutate: building {len(programs)} check programs in {out}", flush=True)
     jobs = os.environ.get("COLLIDE_JOBS", "2")
-    if subprocess.run(["ninja", "-C", str(out), f"-j{jobs}", *names], env=env).returncode != 0:
+    if subprocess.run(["ninja", "-C", str(out), f"-j{jobs}", *sorted(programs)], env=env).returncode != 0:
         raise ListError(f"the mutated tree does not build (see the compiler's message above; {out})")
-    exe = {n: next(out.rglob(n)) for n in names}
     regressions = str(ROOT / "tests" / "regressions")
-    layers: dict[str, list[list[str]]] = {"properties": [[str(exe["collide_properties"]), "--gtest_fail_fast"]],
-                                          "replays": [[str(exe["collide_replay_cases"]), regressions]], "unit": []}
-    for n in names:
-        if n.startswith("fuzz_replay_"):
-            target = n[len("fuzz_replay_"):]
-            layers["replays"].append([str(exe[n]), str(ROOT / "fuzz" / "corpus" / target)])
-            layers["replays"].append([str(exe[n]), "--cases-of", regressions])
-        elif n.startswith("unit_"):
-            layers["unit"].append([str(exe[n]), "--gtest_fail_fast"])
+    layers: dict[str, list[list[str]]] = {layer: [] for layer in LAYERS}
+    for path, layer in sorted(programs.items(), key=lambda kv: (kv[0] != "properties/collide_properties", kv[0])):
+        exe = str(out / path)
+        name = path.rsplit("/", 1)[-1]
+        if layer == "replays" and name.startswith("fuzz_replay_"):
+            target = name[len("fuzz_replay_"):]
+            layers["replays"].append([exe, str(ROOT / "fuzz" / "corpus" / target)])
+            layers["replays"].append([exe, "--cases-of", regressions])
+        elif layer == "replays":
+            layers["replays"].insert(0, [exe, regressions])
+        else:
+            layers[layer].append([exe, "--gtest_fail_fast"])
     return layers
 
 
@@ -211,18 +227,18 @@ def run_layer(commands: list[list[str]], mutant: int, cases_dir: str) -> dict:
     env = dict(os.environ, COLLIDE_MUTANT=str(mutant), RC_PARAMS=PROPS_PARAMS, COLLIDE_CASES_DIR=cases_dir)
     env.pop("COLLIDE_PROPS_REPORT", None)
     start = time.monotonic()
-    for cmd in commands:
+    for index, cmd in enumerate(commands):
         try:
             proc = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
         except subprocess.TimeoutExpired:
             return {"killed": True, "seconds": round(time.monotonic() - start, 2),
-                    "by": f"{pathlib.Path(cmd[0]).name}: no answer within {TIMEOUT} s"}
+                    "by": f"{pathlib.Path(cmd[0]).name}: no answer within {TIMEOUT} s", "index": index}
         if proc.returncode != 0:
             failed = re.findall(r"^\[  FAILED  \] (\S+\.\S+) \(", proc.stdout, re.M)
             first_fail = re.search(r"^FAIL (\S+)", proc.stdout, re.M)
             what = failed[0] if failed else first_fail.group(1) if first_fail else f"exit status {proc.returncode}"
             return {"killed": True, "seconds": round(time.monotonic() - start, 2),
-                    "by": f"{pathlib.Path(cmd[0]).name}: {what}", "failed_tests": failed}
+                    "by": f"{pathlib.Path(cmd[0]).name}: {what}", "failed_tests": failed, "index": index}
     return {"killed": False, "seconds": round(time.monotonic() - start, 2), "by": ""}
 
 
@@ -262,18 +278,25 @@ def main() -> int:
         for layer, result in baseline.items():
             if not result["killed"]:
                 continue
-            if layer == "properties" and result.get("failed_tests"):
+            cmd = layers[layer][result["index"]]
+            if result.get("failed_tests"):
                 # Find every failing test (fail-fast stops at the first), then filter them out.
-                full = subprocess.run([layers[layer][0][0]], capture_output=True, text=True,
+                full = subprocess.run([cmd[0]], capture_output=True, text=True,
                                       env=dict(os.environ, COLLIDE_MUTANT="0", RC_PARAMS=PROPS_PARAMS,
                                                COLLIDE_CASES_DIR=cases))
                 bad = sorted(set(re.findall(r"^\[  FAILED  \] (\S+\.\S+) \(", full.stdout, re.M)))
-                excluded += [f"properties {t}" for t in bad]
-                layers[layer][0] = layers[layer][0][:2] + ["--gtest_filter=-" + ":".join(bad)]
+                excluded += [f"{layer} {pathlib.Path(cmd[0]).name} {t}" for t in bad]
+                cmd.append("--gtest_filter=-" + ":".join(bad))
+                if run_layer([cmd], 0, cases)["killed"]:
+                    print(f"mutate: {cmd[0]} fails without any mutant even without {len(bad)} failing tests",
+                          file=sys.stderr)
+                    return 2
             else:
-                cmd = next(c for c in layers[layer] if pathlib.Path(c[0]).name == result["by"].split(":")[0])
                 layers[layer].remove(cmd)
                 excluded.append(f"{layer} {' '.join(pathlib.Path(x).name for x in cmd)}")
+            if run_layer(layers[layer], 0, cases)["killed"]:
+                print(f"mutate: layer {layer} still fails without any mutant; fix that first", file=sys.stderr)
+                return 2
         for e in excluded:
             print(f"mutate: fails without any mutant, left out: {e}")
 

@@ -445,6 +445,7 @@ Verdict replay_as(const Case& c) {
   if (c.law == "contact") return contact_law(a, b());
   if (c.law == "distance") return distance_law(a, b());
   if (c.law == "touching") return touching(a, b());
+  if (c.law == "scene") return scene(a);
   if (c.law == "contains") return contains_law(a, Vec2<T>(narrow<T>(c.ox), narrow<T>(c.oy)));
   throw CaseError("unknown law '" + c.law + "'");
 }

@@ -152,6 +152,14 @@ Verdict contains_law(const Shape<T>& s, const Vec2<T>& p);
 template <Scalar T>
 Verdict touching(const Shape<T>& a, const Shape<T>& b);
 
+/// Law 8f. A scene (the children of the compound `group`, each taken as a shape):
+/// broadphase::find_overlapping_shapes() lists exactly the pairs overlaps() reports one pair at a
+/// time, find_contacts() gives one contact per such pair identical to contact(), and
+/// pairs_involving() on a DynamicTree of their bounds gives each pair of meeting boxes with a proxy
+/// in the first half exactly once.
+template <Scalar T>
+Verdict scene(const Shape<T>& group);
+
 /// Law 9. Building a shape of `kind` from raw values (any bit patterns) through its make():
 /// NaN or infinity gives Error::NonFinite, a magnitude above max_magnitude<T>() Error::OutOfRange
 /// (first offending value in argument order), then the kind's own named errors (negative radius
@@ -167,6 +175,6 @@ inline constexpr std::string_view kLawNames[] = {"agreement",  "symmetry",      
                                                  "rotation",   "resolution",     "bounds",
                                                  "raycast",    "hierarchy",      "representation",
                                                  "contact",    "distance",       "rejection",
-                                                 "contains",   "touching"};
+                                                 "contains",   "touching",       "scene"};
 
 }  // namespace collide::laws
