@@ -485,14 +485,18 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
            pair_text(a, b));
       return;
     }
-    // Midway: within 3/4 of the depth (plus the bound) of both boundaries: the middle half
-    // between the surfaces, which leaves room for a rounded incident face at a tilt (its surface
-    // is then nearer than along the normal) while a point on one face of a deep contact, a full
-    // depth from the other surface, fails. Judged where "midway
-    // between the surfaces" has one meaning: two primitives with interiors that overlap without
-    // either containing the other (concentric circles have no such point, a segment no interior).
-    if (v.relation != Relation::Overlapping || pa.size() != 1 || pb.size() != 1 || !detail::has_interior(pa[0]) ||
-        !detail::has_interior(pb[0])) {
+    // Midway: within 3/4 of the depth (plus the bound) of both boundaries, the middle half
+    // between the surfaces, while a point on one face of a deep contact lies a full depth from
+    // the other surface. Judged where "midway between the surfaces" has one meaning: two
+    // primitives with interiors that overlap without either containing the other (concentric
+    // circles have no such point, a segment no interior), and whose surfaces are faces (no
+    // radius) or round about disjoint cores; a rounded face clipped at a tilt is not judged
+    // (its surface is nearer than along the normal, by up to the depth).
+    const bool judged = v.relation == Relation::Overlapping && pa.size() == 1 && pb.size() == 1 &&
+                        detail::has_interior(pa[0]) && detail::has_interior(pb[0]) &&
+                        ((!detail::is_rounded(pa[0]) && !detail::is_rounded(pb[0])) ||
+                         !oracle::overlaps(detail::core_primitive(pa[0]), detail::core_primitive(pb[0])));
+    if (!judged) {
       v.account += "; midway not judged (" + std::string(name(v.relation)) + ")";
       return;
     }

@@ -135,6 +135,22 @@ bool has_interior(const Primitive<T>& p) {
       p);
 }
 
+/// The primitive's core: a circle or capsule with radius 0 (other kinds are their own core).
+template <Scalar T>
+Primitive<T> core_primitive(const Primitive<T>& p) {
+  if (const auto* c = std::get_if<Circle<T>>(&p)) return Circle<T>(c->center(), T(0));
+  if (const auto* c = std::get_if<Capsule<T>>(&p)) return Capsule<T>(c->a(), c->b(), T(0));
+  return p;
+}
+
+/// The primitive is rounded: a circle or capsule with a positive radius.
+template <Scalar T>
+bool is_rounded(const Primitive<T>& p) {
+  if (const auto* c = std::get_if<Circle<T>>(&p)) return c->radius() > 0;
+  if (const auto* c = std::get_if<Capsule<T>>(&p)) return c->radius() > 0;
+  return false;
+}
+
 /// p is within d of the boundary of the closed primitive s (inside or outside), exactly.
 template <Scalar T>
 bool near_boundary(const Primitive<T>& s, const Vec2<double>& p, double d) {
