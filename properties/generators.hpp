@@ -141,26 +141,10 @@ Vec2c extreme_x(const Shape<T>& s, int sign) {
       s);
 }
 
-/// The primitives of a shape: a compound's children, or the shape itself.
-template <Scalar T>
-std::vector<Primitive<T>> primitives_in(const Shape<T>& s) {
-  if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children();
-  return {std::visit(
-      [](const auto& x) -> Primitive<T> {
-        using S = std::remove_cvref_t<decltype(x)>;
-        if constexpr (std::is_same_v<S, Compound<T>>) {
-          return x.children().front();
-        } else {
-          return x;
-        }
-      },
-      s)};
-}
-
 /// The core of a shape's first primitive (a compound's first child).
 template <Scalar T>
 ::collide::detail::Core first_core(const Shape<T>& s) {
-  return std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, primitives_in(s).front());
+  return std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, laws::primitives_of(s).front());
 }
 
 /// A point inside the shape (a core vertex average of its first primitive).

@@ -210,7 +210,7 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
   entries.push_back({"hierarchy", true, [=] {
                        // The compound: a's primitives plus up to two more children nearby.
                        const auto [a, b] = gen_pair<T>(ka, kb);
-                       std::vector<Primitive<T>> children = primitives_in(a);
+                       std::vector<Primitive<T>> children = laws::primitives_of(a);
                        const int extra = *rc::gen::inRange(0, 3);
                        for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
                        const Shape<T> comp = Compound<T>(std::move(children));
@@ -315,7 +315,7 @@ void register_kind_laws(ShapeKind k) {
         const auto kb = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
         const auto [a, b] = gen_pair<T>(ka, kb);
         for (const Shape<T>* s : {&a, &b})
-          for (const Primitive<T>& p : primitives_in(*s)) all.push_back(p);
+          for (const Primitive<T>& p : laws::primitives_of(*s)) all.push_back(p);
       }
       const Shape<T> group = Compound<T>(std::move(all));
       judge<T>(laws::scene(group), "scene", kind, group, std::nullopt, false);

@@ -332,7 +332,8 @@ def main() -> int:
           f"failure; time = seconds of checks until the mutant was killed. Properties: RC_PARAMS=\"{PROPS_PARAMS}\".",
           "", "| # | mutant | file | properties | replays | unit |", "|---|---|---|---|---|---|"]
     for r in rows:
-        cells = [f"{r[layer]['seconds']:.1f} s" if r[layer]["killed"] else "**alive**" for layer in LAYERS]
+        cells = [f"{r[layer]['seconds']:.1f} s ({r[layer]['by'].split(': ', 1)[-1]})" if r[layer]["killed"]
+                 else "**alive**" for layer in LAYERS]
         md.append(f"| {r['number']} | {r['name']}: {r['description']} | {r['file'].replace('lib/include/collide/', '')} | "
                   + " | ".join(cells) + " |")
     md += ["", f"Killed: properties {score['properties']}/{len(rows)}, replays {score['replays']}/{len(rows)}, "

@@ -14,6 +14,7 @@
 
 namespace collide::laws::detail {
 
+using ::collide::laws::primitives_of;
 using ::collide::laws::turn;
 using ::collide::laws::turned;
 
@@ -98,22 +99,6 @@ constexpr double eps() {
 template <Scalar T>
 bool is_compound(const Shape<T>& s) {
   return std::holds_alternative<Compound<T>>(s);
-}
-
-/// The primitives of a shape: a compound's children, or the shape itself.
-template <Scalar T>
-std::vector<Primitive<T>> primitives_of(const Shape<T>& s) {
-  if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children();
-  return {std::visit(
-      [](const auto& x) -> Primitive<T> {
-        using S = std::remove_cvref_t<decltype(x)>;
-        if constexpr (std::is_same_v<S, Compound<T>>) {
-          return x.children().front();  // unreachable: handled above
-        } else {
-          return x;
-        }
-      },
-      s)};
 }
 
 /// The primitive has interior points (no zero radius, extent or width).
