@@ -141,23 +141,16 @@ Vec2c extreme_x(const Shape<T>& s, int sign) {
       s);
 }
 
+/// The core of a shape's first primitive (a compound's first child).
+template <Scalar T>
+::collide::detail::Core first_core(const Shape<T>& s) {
+  return std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, laws::primitives_of(s).front());
+}
+
 /// A point inside the shape (a core vertex average of its first primitive).
 template <Scalar T>
 Vec2c inner_point(const Shape<T>& s) {
-  const Primitive<T> first = [&]() -> Primitive<T> {
-    if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children().front();
-    return std::visit(
-        [](const auto& x) -> Primitive<T> {
-          using S = std::remove_cvref_t<decltype(x)>;
-          if constexpr (std::is_same_v<S, Compound<T>>) {
-            return x.children().front();
-          } else {
-            return x;
-          }
-        },
-        s);
-  }();
-  const ::collide::detail::Core core = std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, first);
+  const ::collide::detail::Core core = first_core(s);
   Vec2c m = Vec2c::Zero();
   for (const Vec2c& q : core.pts()) m += q;
   return m / double(core.size());
@@ -180,17 +173,19 @@ T ulp_at(double m) {
 /// How the second shape is placed against the first.
 enum class Placement { Separated, Touching, Nudged, Overlapping, Contained };
 
-/// A pair of kinds (A, B) placed on purpose (see the file comment).
+/// A pair of kinds (A, B) placed on purpose (see the file comment); `only` restricts the placement
+/// (the touching law asks for touching and nudged pairs only).
 template <Scalar T>
-std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb) {
+std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional<Placement> only = std::nullopt) {
   using V = Vec2<T>;
   const int e = *rc::gen::weightedElement<int>({{1, -20}, {1, -6}, {6, 0}, {1, 6}, {1, 20}});
   const double s = std::ldexp(1.0, e);
-  const auto place = *rc::gen::weightedElement<Placement>({{1, Placement::Separated},
-                                                           {4, Placement::Touching},
-                                                           {2, Placement::Nudged},
-                                                           {2, Placement::Overlapping},
-                                                           {3, Placement::Contained}});
+  const auto place = only ? *only
+                          : *rc::gen::weightedElement<Placement>({{1, Placement::Separated},
+                                                                  {4, Placement::Touching},
+                                                                  {2, Placement::Nudged},
+                                                                  {2, Placement::Overlapping},
+                                                                  {3, Placement::Contained}});
   const bool b_moves = *rc::gen::arbitrary<bool>();  // which of the two is placed against the other
   Shape<T> fixed = gen_shape_of<T>(b_moves ? ka : kb, s);
   ShapeKind kmove = b_moves ? kb : ka;
@@ -225,6 +220,81 @@ std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb) {
   mover = laws::turned(mover, k, mirror);
   if (b_moves) return {fixed, mover};
   return {mover, fixed};
+}
+
+/// A round end of a circle or capsule (centre, radius), for Pythagorean placements.
+template <Scalar T>
+std::optional<std::pair<Vec2c, double>> round_end(const Shape<T>& s, bool second) {
+  if (const auto* c = std::get_if<Circle<T>>(&s)) return std::pair{widen(c->center()), double(c->radius())};
+  if (const auto* c = std::get_if<Capsule<T>>(&s)) return std::pair{widen(second ? c->b() : c->a()), double(c->radius())};
+  return std::nullopt;
+}
+
+/// Two round shapes (circles, capsule ends) touching exactly at a Pythagorean distance: centres
+/// (3m, 4m) * s apart (turned by quarter turns and mirrors) with radii summing to 5m * s, so no
+/// value is rounded; or moved one ulp apart.
+template <Scalar T>
+std::pair<Shape<T>, Shape<T>> gen_pythagorean_pair(ShapeKind ka, ShapeKind kb, bool nudge) {
+  using V = Vec2<T>;
+  const double s = std::ldexp(1.0, *rc::gen::weightedElement<int>({{1, -20}, {4, 0}, {1, 20}}));
+  const int m = *rc::gen::inRange(1, 5);
+  const int ra = *rc::gen::inRange(0, 5 * m + 1);
+  auto make = [&](ShapeKind k, const V& centre, int r, bool at_b) -> Shape<T> {
+    if (k == ShapeKind::Circle) return Circle<T>(centre, T(r * s));
+    const V other(T(double(centre.x()) + grid(-8, 8) * s), T(double(centre.y()) + grid(-8, 8) * s));
+    // Only the capsule end at the centre is placed: the rest of the capsule must stay away.
+    return at_b ? Capsule<T>(other, centre, T(r * s)) : Capsule<T>(centre, other, T(r * s));
+  };
+  const V ca(T(grid(-16, 16) * s), T(grid(-16, 16) * s));
+  const std::vector<std::pair<int, int>> legs = {{3, 4}, {4, 3}, {-3, 4}, {3, -4}, {-4, -3}, {0, 5}, {5, 0}};
+  const auto [lx, ly] = *rc::gen::elementOf(legs);
+  V cb(T(double(ca.x()) + lx * m * s), T(double(ca.y()) + ly * m * s));
+  if (nudge) cb.x() = std::nextafter(cb.x(), T(lx >= 0 ? 1e30 : -1e30));
+  return {make(ka, ca, ra, *rc::gen::arbitrary<bool>()), make(kb, cb, 5 * m - ra, *rc::gen::arbitrary<bool>())};
+}
+
+/// A pair for the touching law: touching exactly by construction (extreme points aligned, shared
+/// vertices and edges, a vertex on an edge, Pythagorean circles and capsule ends), or nudged a few
+/// ulps either way, at every scale the placement keeps exact.
+template <Scalar T>
+std::pair<Shape<T>, Shape<T>> gen_touching_pair(ShapeKind ka, ShapeKind kb) {
+  const bool round = (ka == ShapeKind::Circle || ka == ShapeKind::Capsule) &&
+                     (kb == ShapeKind::Circle || kb == ShapeKind::Capsule);
+  const int style = *rc::gen::inRange(0, round ? 4 : 3);
+  if (style == 3) return gen_pythagorean_pair<T>(ka, kb, *rc::gen::inRange(0, 3) == 0);
+  return gen_pair<T>(ka, kb, style == 2 ? Placement::Nudged : Placement::Touching);
+}
+
+/// A point to test contains() with: a core vertex of the shape, its extreme points, moved by a
+/// few ulps or by the radius, a point inside, a grid point nearby, or NaN / infinity.
+template <Scalar T>
+Vec2<T> gen_point_near(const Shape<T>& s) {
+  using V = Vec2<T>;
+  const int style = *rc::gen::inRange(0, 8);
+  if (style == 0) {
+    const std::vector<T> odd = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                                -std::numeric_limits<T>::infinity(), T(0)};
+    return V(*rc::gen::elementOf(odd), *rc::gen::elementOf(odd));
+  }
+  const Vec2c inner = inner_point(s);
+  Vec2c base = inner;
+  if (style <= 3) {
+    base = extreme_x(s, *rc::gen::element(-1, 1));
+  } else if (style <= 5) {
+    const ::collide::detail::Core core = first_core(s);
+    base = core[std::size_t(*rc::gen::inRange(0, int(core.size())))];
+    if (core.radius > 0 && *rc::gen::arbitrary<bool>()) base.y() += core.radius * *rc::gen::element(-1.0, 1.0);
+  } else if (style == 6) {
+    const double size = (widen(bounds(s).max()) - widen(bounds(s).min())).maxCoeff();
+    base = inner + Vec2c(grid(-8, 8), grid(-8, 8)) * (size / 4);
+  }
+  V p(T(base.x()), T(base.y()));
+  const int ulps = *rc::gen::inRange(-2, 3);
+  for (int i = 0; i < std::abs(ulps); ++i) {
+    const int k = *rc::gen::inRange(0, 2);
+    p[k] = std::nextafter(p[k], ulps > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
+  }
+  return p;
 }
 
 /// A translation: exact dyadic (small or large), or inexact (k / 3, rounded).
@@ -262,6 +332,53 @@ T gen_raw_value() {
     return *rc::gen::elementOf(special);
   }
   return T(grid(-16, 16) / 4);
+}
+
+/// Values for the rejection law aimed at one named error of `kind` on purpose (or valid), so
+/// that each validation rule is met in every run, whatever the seed: a non-finite or out-of-range
+/// value at any index, a negative radius or extent, min > max, a zero axis, and for polygons too
+/// few distinct vertices, all collinear, a reflex vertex, a side doubling back, a star winding
+/// twice, or a valid clockwise square. Layout as in laws::rejection.
+template <Scalar T>
+std::vector<T> gen_aimed_values(ShapeKind kind) {
+  auto v = [](std::initializer_list<double> xs) {
+    std::vector<T> out;
+    for (double x : xs) out.push_back(T(x));
+    return out;
+  };
+  const double a = grid(1, 8), b = grid(1, 8);
+  std::vector<T> out;
+  switch (kind) {
+    case ShapeKind::Circle:
+    case ShapeKind::Compound: out = v({a, b, *rc::gen::element(a, -a, 0.0)}); break;
+    case ShapeKind::Aabb: out = *rc::gen::arbitrary<bool>() ? v({a, b, -a, b + 1}) : v({a, b, a + 1, b - 1 - grid(0, 4)}); break;
+    case ShapeKind::Obb: {
+      const int style = *rc::gen::inRange(0, 3);
+      out = style == 0 ? v({a, b, -a, b, 1, 0}) : style == 1 ? v({a, b, a, -b, 0, 1}) : v({a, b, a, b, 0, 0});
+      break;
+    }
+    case ShapeKind::Capsule: out = v({a, b, b, a, *rc::gen::element(a, -a, 0.0)}); break;
+    case ShapeKind::Polygon: {
+      const std::vector<std::vector<double>> polygons = {
+          {0, 0, a, 0, 0, 0},                                  // too few distinct vertices
+          {0, 0, a, a, 2 * a, 2 * a, 3 * a, 3 * a},            // all collinear
+          {0, 0, 4 * a, 0, a, a, 0, 4 * a},                    // reflex vertex (a dart)
+          {0, 0, 4 * a, 0, 2 * a, 0, 4 * a, 4 * a},            // doubling back along a side
+          {0, 4, 2, -3, -4, 1, 4, 1, -2, -3},                  // a star: winds twice
+          {0, 0, 0, a, a, a, a, 0},                            // clockwise square (valid)
+      };
+      const auto& poly = *rc::gen::elementOf(polygons);
+      for (double x : poly) out.push_back(T(x));
+      break;
+    }
+  }
+  // Sometimes a non-finite or out-of-range value replaces one of them.
+  if (*rc::gen::inRange(0, 4) == 0) {
+    const std::vector<T> bad = {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::infinity(),
+                                T(max_magnitude<T>() * T(2)), -T(max_magnitude<T>() * T(2))};
+    out[std::size_t(*rc::gen::inRange(0, int(out.size())))] = *rc::gen::elementOf(bad);
+  }
+  return out;
 }
 
 }  // namespace collide::props

@@ -14,12 +14,14 @@
 #include "generators.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace collide::props {
@@ -74,6 +76,8 @@ void judge(const laws::Verdict& v, const std::string& law, const std::string& pa
   if (!v.ok) RC_FAIL(v.account);
 }
 
+long disagreement_ceiling(const std::string& test, long cases);
+
 /// Saves the counterexample and writes the test's record.
 void finish(const std::string& law, const std::string& pair, const std::string& scalar) {
   std::string saved;
@@ -93,19 +97,72 @@ void finish(const std::string& law, const std::string& pair, const std::string& 
         << "\", \"cases\": " << g_tally.cases;
     for (std::size_t i = 0; i < 4; ++i)
       out << ", \"" << laws::name(static_cast<laws::Relation>(i)) << "\": " << g_tally.relations[i];
-    out << ", \"disagreements\": " << g_tally.disagreements << ", \"failed\": " << (g_tally.failed ? "true" : "false")
+    out << ", \"disagreements\": " << g_tally.disagreements
+        << ", \"disagreement_ceiling\": " << disagreement_ceiling(law + " " + pair + " " + scalar, g_tally.cases)
+        << ", \"failed\": " << (g_tally.failed ? "true" : "false")
         << ", \"case_file\": \"" << saved << "\"}\n";
   }
 }
 
-/// Every relation holds at least 10% of the cases (the generators aim at the boundary).
-void expect_distribution(const std::string& what) {
-  if (g_tally.failed || g_tally.cases < 50) return;
-  for (std::size_t i = 0; i < 4; ++i) {
-    EXPECT_GE(10 * g_tally.relations[i], g_tally.cases)
-        << what << ": relation '" << laws::name(static_cast<laws::Relation>(i)) << "' has " << g_tally.relations[i]
-        << " of " << g_tally.cases << " cases (< 10%)";
+/// The fewest cases of a relation that a generator aiming at it with probability >= p gives in n
+/// cases, except with probability below 1e-9 (binomial lower tail): a check at this count fails on
+/// correct code about once in a billion runs, at any seed, yet fails for sure when a generator
+/// stops producing that relation once n is large enough (n >= 400 for p = 5%).
+long floor_count(long n, double p) {
+  double cdf = 0;
+  for (long k = 0; k <= n; ++k) {
+    const double log_pmf = std::lgamma(double(n) + 1) - std::lgamma(double(k) + 1) - std::lgamma(double(n - k) + 1) +
+                           double(k) * std::log(p) + double(n - k) * std::log1p(-p);
+    cdf += std::exp(log_pmf);
+    if (cdf > 1e-9) return k;
   }
+  return n;
+}
+
+/// Each relation the generators aim at (at least 1 in 20 cases by construction: see generators.hpp)
+/// appears at least floor_count(cases, 5%) times.
+void expect_distribution(const std::string& what, std::initializer_list<laws::Relation> aimed) {
+  if (g_tally.failed) return;
+  const long need = floor_count(g_tally.cases, 0.05);
+  for (const laws::Relation r : aimed) {
+    const long got = g_tally.relations[static_cast<std::size_t>(r)];
+    EXPECT_GE(got, need) << what << ": relation '" << laws::name(r) << "' has " << got << " of " << g_tally.cases
+                         << " cases (fewer than " << need << ", the 1e-9 quantile for a 5% share)";
+  }
+}
+
+/// In-band disagreements per law x pair x scalar are allowed, up to a ceiling: 3 + rate * cases,
+/// with the rate from properties/disagreement_ceilings.txt (twice the largest share measured on
+/// correct code, at least 1%; 2% for a test not listed). A decision drifting inside its band
+/// (touching circles turned apart: 3 -> 501 of 2000) shows up as a jump past it.
+double ceiling_rate(const std::string& test) {
+  static const std::map<std::string, double> rates = [] {
+    std::map<std::string, double> out;
+    std::ifstream in(COLLIDE_CEILINGS_FILE);
+    std::string law, pair, scalar;
+    double rate = 0;
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream ls(line);
+      if (ls >> law >> pair >> scalar >> rate) out[law + " " + pair + " " + scalar] = rate;
+    }
+    return out;
+  }();
+  const auto it = rates.find(test);
+  return it == rates.end() ? 0.02 : it->second;
+}
+
+long disagreement_ceiling(const std::string& test, long cases) {
+  return 3 + long(std::ceil(ceiling_rate(test) * double(cases)));
+}
+
+void expect_disagreement_ceiling(const std::string& what) {
+  if (g_tally.failed) return;
+  const long ceiling = disagreement_ceiling(what, g_tally.cases);
+  EXPECT_LE(g_tally.disagreements, ceiling)
+      << what << ": " << g_tally.disagreements << " disagreements allowed (within the tolerance band) in "
+      << g_tally.cases << " cases, above the ceiling " << ceiling << " (3 + " << ceiling_rate(what) << " * cases)";
 }
 
 template <Scalar T>
@@ -129,6 +186,10 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
   simple("resolution", &laws::resolution<T>);
   simple("contact", &laws::contact_law<T>);
   simple("distance", &laws::distance_law<T>);
+  entries.push_back({"touching", false, [=] {
+                       const auto [a, b] = gen_touching_pair<T>(ka, kb);
+                       judge<T>(laws::touching(a, b), "touching", pair, a, b, true);
+                     }});
   entries.push_back({"translation", true, [=] {
                        const auto [a, b] = gen_pair<T>(ka, kb);
                        const Vec2<T> t = gen_translation<T>(1.0);
@@ -149,17 +210,7 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
   entries.push_back({"hierarchy", true, [=] {
                        // The compound: a's primitives plus up to two more children nearby.
                        const auto [a, b] = gen_pair<T>(ka, kb);
-                       std::vector<Primitive<T>> children;
-                       if (const auto* c = std::get_if<Compound<T>>(&a)) {
-                         children = c->children();
-                       } else {
-                         std::visit(
-                             [&](const auto& x) {
-                               using S = std::remove_cvref_t<decltype(x)>;
-                               if constexpr (!std::is_same_v<S, Compound<T>>) children.emplace_back(x);
-                             },
-                             a);
-                       }
+                       std::vector<Primitive<T>> children = laws::primitives_of(a);
                        const int extra = *rc::gen::inRange(0, 3);
                        for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
                        const Shape<T> comp = Compound<T>(std::move(children));
@@ -184,7 +235,14 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
                                 void TestBody() override {
                                   g_tally = Tally{};
                                   ::rc::detail::checkGTest(property);
-                                  if (dist) expect_distribution(law + " " + pair + " " + scalar);
+                                  const std::string what = law + " " + pair + " " + scalar;
+                                  if (dist) {
+                                    expect_distribution(what, {laws::Relation::Separated, laws::Relation::Touching,
+                                                               laws::Relation::Overlapping, laws::Relation::Contained});
+                                  } else {
+                                    expect_distribution(what, {laws::Relation::Touching});
+                                  }
+                                  expect_disagreement_ceiling(what);
                                   finish(law, pair, scalar);
                                 }
                               };
@@ -212,6 +270,7 @@ void register_kind_laws(ShapeKind k) {
                                 void TestBody() override {
                                   g_tally = Tally{};
                                   ::rc::detail::checkGTest(property);
+                                  expect_disagreement_ceiling(law + " " + kind + " " + scalar);
                                   finish(law, kind, scalar);
                                 }
                               };
@@ -246,10 +305,38 @@ void register_kind_laws(ShapeKind k) {
       c.max_t = max_t;
     });
   });
+  if (k == ShapeKind::Compound) {
+    // A scene of up to 8 shapes of any kind placed against each other.
+    reg("scene", [=] {
+      std::vector<Primitive<T>> all;
+      const int pairs = *rc::gen::inRange(1, 5);
+      for (int i = 0; i < pairs; ++i) {
+        const auto ka = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
+        const auto kb = static_cast<ShapeKind>(*rc::gen::inRange(0, int(kKindCount) - 1));
+        const auto [a, b] = gen_pair<T>(ka, kb);
+        for (const Shape<T>* s : {&a, &b})
+          for (const Primitive<T>& p : laws::primitives_of(*s)) all.push_back(p);
+      }
+      const Shape<T> group = Compound<T>(std::move(all));
+      judge<T>(laws::scene(group), "scene", kind, group, std::nullopt, false);
+    });
+  }
+  reg("contains", [=] {
+    const auto [a, b] = gen_pair<T>(k, k);
+    const Vec2<T> p = gen_point_near(a);
+    judge<T>(laws::contains_law(a, p), "contains", kind, a, std::nullopt, false, [=](laws::Case& c) {
+      c.ox = p.x();
+      c.oy = p.y();
+    });
+  });
   reg("rejection", [=] {
     const int n = k == ShapeKind::Polygon ? 2 * *rc::gen::inRange(0, 6) : k == ShapeKind::Compound ? 3 * *rc::gen::inRange(0, 3) : 6;
     std::vector<T> values;
-    for (int i = 0; i < n; ++i) values.push_back(gen_raw_value<T>());
+    if (*rc::gen::arbitrary<bool>()) {
+      values = gen_aimed_values<T>(k);
+    } else {
+      for (int i = 0; i < n; ++i) values.push_back(gen_raw_value<T>());
+    }
     const laws::Verdict v = laws::rejection<T>(k, std::span<const T>(values));
     g_tally.record(v, false);
     RC_TAG(v.account.substr(0, v.account.find(':')));

@@ -246,6 +246,9 @@ void write_case(std::ostream& out, const Case& c) {
     out << "# ray (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ") + t (" << detail::num(c.dx) << ", "
         << detail::num(c.dy) << "), t <= " << detail::num(c.max_t) << "\nray " << hex(c.ox) << ' ' << hex(c.oy)
         << ' ' << hex(c.dx) << ' ' << hex(c.dy) << " max_t " << hex(c.max_t) << '\n';
+  if (c.law == "contains")
+    out << "# point (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ")\npoint " << hex(c.ox) << ' ' << hex(c.oy)
+        << '\n';
   if (c.law == "rejection") {
     out << "values";
     for (double v : c.values) out << ' ' << hex(v);
@@ -335,6 +338,11 @@ Case read_case(std::istream& in) {
       c.dx = parse_double(t[2], line);
       c.dy = parse_double(t[3], line);
       c.max_t = parse_double(mt, line);
+    } else if (key == "point") {
+      std::string x, y;
+      if (!(ls >> x >> y)) throw CaseError(where() + "expected 'point X Y'");
+      c.ox = parse_double(x, line);
+      c.oy = parse_double(y, line);
     } else if (key == "values") {
       std::string tok;
       while (ls >> tok) c.values.push_back(parse_double(tok, line));
@@ -436,6 +444,9 @@ Verdict replay_as(const Case& c) {
   if (c.law == "representation") return representation(a, b());
   if (c.law == "contact") return contact_law(a, b());
   if (c.law == "distance") return distance_law(a, b());
+  if (c.law == "touching") return touching(a, b());
+  if (c.law == "scene") return scene(a);
+  if (c.law == "contains") return contains_law(a, Vec2<T>(narrow<T>(c.ox), narrow<T>(c.oy)));
   throw CaseError("unknown law '" + c.law + "'");
 }
 

@@ -1,5 +1,5 @@
 // The laws on a pair of shapes: agreement, symmetry, translation, rotation, resolution,
-// hierarchy, representation, contact, distance.
+// hierarchy, representation, contact, distance, touching.
 
 #include "support.hpp"
 
@@ -454,7 +454,8 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
     }
     // Each point lies within depth + bound of both shapes (plus its own rounding to T).
     const double scale = std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
-    const double reach = depth + bound + 2 * detail::eps<T>() * scale;
+    const double point_round = 2 * detail::eps<T>() * scale + double(std::numeric_limits<T>::denorm_min());
+    const double reach = depth + bound + point_round;
     for (int i = 0; i < c->count; ++i) {
       const Vec2c p = c->points[std::size_t(i)].template cast<double>();
       for (const Shape<T>* s : {&a, &b}) {
@@ -465,6 +466,86 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
         }
       }
     }
+    const auto pa = detail::primitives_of(a), pb = detail::primitives_of(b);
+    // Direction: a moved by -normal * (depth + 2 bounds) no longer overlaps b. For compounds the
+    // contact is the deepest child pair's, so some overlapping child pair must be separated.
+    const Vec2c push = -n * (depth + 2 * bound);
+    bool separated = false, any_pair = false;
+    for (const Primitive<T>& x : pa) {
+      for (const Primitive<T>& y : pb) {
+        if (separated || !oracle::overlaps(x, y)) continue;
+        any_pair = true;
+        separated = oracle::separates(x, y, push);
+      }
+    }
+    if (any_pair && !separated) {
+      fail(v, "a moved by -normal * (depth + " + num(2 * bound) + ") separated from b",
+           "still overlapping after the push " + vec(Vec2c(push)) + " (normal " + vec(c->normal) + ", depth " +
+               num(depth) + ")",
+           pair_text(a, b));
+      return;
+    }
+    // Midway: within 3/4 of the depth (plus the bound) of both boundaries, the middle half
+    // between the surfaces, while a point on one face of a deep contact lies a full depth from
+    // the other surface. Judged where "midway between the surfaces" has one meaning: two
+    // primitives with interiors that overlap without either containing the other (concentric
+    // circles have no such point, a segment no interior), and whose surfaces are faces (no
+    // radius) or round about disjoint cores; a rounded face clipped at a tilt is not judged
+    // (its surface is nearer than along the normal, by up to the depth).
+    const bool judged = v.relation == Relation::Overlapping && pa.size() == 1 && pb.size() == 1 &&
+                        detail::has_interior(pa[0]) && detail::has_interior(pb[0]) &&
+                        ((!detail::is_rounded(pa[0]) && !detail::is_rounded(pb[0])) ||
+                         !oracle::overlaps(detail::core_primitive(pa[0]), detail::core_primitive(pb[0])));
+    if (!judged) {
+      v.account += "; midway not judged (" + std::string(name(v.relation)) + ")";
+      return;
+    }
+    const double half = depth * 0.75 + 2 * bound + point_round;
+    auto near_some = [&](const std::vector<Primitive<T>>& prims, const Vec2c& p) {
+      for (const Primitive<T>& x : prims) {
+        if (detail::near_boundary(x, p, half)) return true;
+      }
+      return false;
+    };
+    for (int i = 0; i < c->count; ++i) {
+      const Vec2c p = c->points[std::size_t(i)].template cast<double>();
+      for (const auto* prims : {&pa, &pb}) {
+        if (!near_some(*prims, p)) {
+          fail(v, "contact point midway: within 3/4 depth + " + num(half - depth * 0.75) + " of both boundaries",
+               "point " + vec(c->points[std::size_t(i)]) + " farther than " + num(half) + " from the boundary of " +
+                   (prims == &pa ? "a" : "b") + " (depth " + num(depth) + ")",
+               pair_text(a, b));
+          return;
+        }
+      }
+    }
+  });
+}
+
+template <Scalar T>
+Verdict touching(const Shape<T>& a, const Shape<T>& b) {
+  return guarded([&](Verdict& v) {
+    v.relation = relation(a, b);
+    const bool ab = overlaps(a, b), ba = overlaps(b, a);
+    const bool exact = oracle::overlaps(a, b);
+    v.account = std::string(name(v.relation)) + ": overlaps(a, b) " + yes(ab) + ", overlaps(b, a) " + yes(ba);
+    if (v.relation == Relation::Touching) {
+      if (!ab || !ba)
+        fail(v, "overlaps true both ways (exactly touching: signed distance 0)",
+             "overlaps(a, b) " + yes(ab) + ", overlaps(b, a) " + yes(ba), pair_text(a, b));
+      return;
+    }
+    if (ab == exact && ba == exact) return;
+    const double tol = overlap_tolerance(a, b);
+    if (oracle::within_band(a, b, tol)) {
+      v.disagreement = true;
+      v.account += "; within the band " + num(tol) + " (signed distance ~" +
+                   num(oracle::approx_signed_distance(a, b)) + "): allowed";
+      return;
+    }
+    fail(v, "overlaps " + yes(exact) + " both ways (signed distance beyond the band " + num(tol) + ")",
+         "overlaps(a, b) " + yes(ab) + ", overlaps(b, a) " + yes(ba),
+         "signed distance ~" + num(oracle::approx_signed_distance(a, b)) + "; " + pair_text(a, b));
   });
 }
 
@@ -504,7 +585,8 @@ Verdict distance_law(const Shape<T>& a, const Shape<T>& b) {
   template Verdict hierarchy<T>(const Shape<T>&, const Shape<T>&);                       \
   template Verdict representation<T>(const Shape<T>&, const Shape<T>&);                  \
   template Verdict contact_law<T>(const Shape<T>&, const Shape<T>&);                     \
-  template Verdict distance_law<T>(const Shape<T>&, const Shape<T>&);
+  template Verdict distance_law<T>(const Shape<T>&, const Shape<T>&);                    \
+  template Verdict touching<T>(const Shape<T>&, const Shape<T>&);
 
 COLLIDE_LAWS_INSTANTIATE(float)
 COLLIDE_LAWS_INSTANTIATE(double)

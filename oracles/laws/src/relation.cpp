@@ -4,6 +4,8 @@
 
 namespace collide::laws {
 
+using detail::primitives_of;
+
 std::string_view name(Relation r) noexcept {
   switch (r) {
     case Relation::Separated: return "separated";
@@ -27,21 +29,6 @@ bool inside_primitive(const Primitive<T>& inner, const Primitive<T>& outer) {
     if (core.radius > 0 && oracle::compare_boundary_distance(outer, p, core.radius) < 0) return false;
   }
   return true;
-}
-
-template <Scalar T>
-std::vector<Primitive<T>> primitives_of(const Shape<T>& s) {
-  if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children();
-  return {std::visit(
-      [](const auto& x) -> Primitive<T> {
-        using S = std::remove_cvref_t<decltype(x)>;
-        if constexpr (std::is_same_v<S, Compound<T>>) {
-          return x.children().front();  // unreachable: handled above
-        } else {
-          return x;
-        }
-      },
-      s)};
 }
 
 /// Every primitive of inner inside one primitive of outer (for a compound outer, inside one child).

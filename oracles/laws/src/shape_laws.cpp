@@ -1,4 +1,5 @@
-// The laws on one shape: bounds are conservative; raycasts hit the boundary first.
+// The laws on one shape: bounds are conservative; raycasts hit the boundary first, with the
+// outward normal; contains() agrees with the oracle.
 
 #include "support.hpp"
 
@@ -93,18 +94,7 @@ std::optional<Primitive<T>> eroded(const Primitive<T>& p, double e) {
 /// The segment [p, q] passes a point deeper than e inside s (checked on the erodable children).
 template <Scalar T>
 bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
-  std::vector<Primitive<T>> prims;
-  if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    prims = c->children();
-  } else {
-    std::visit(
-        [&](const auto& x) {
-          using S = std::remove_cvref_t<decltype(x)>;
-          if constexpr (!std::is_same_v<S, Compound<T>>) prims.emplace_back(x);
-        },
-        s);
-  }
-  for (const Primitive<T>& pr : prims) {
+  for (const Primitive<T>& pr : detail::primitives_of(s)) {
     const auto core = eroded(pr, e);
     if (core && oracle::segment_meets(*core, p, q)) return true;
   }
@@ -124,7 +114,71 @@ bool deep_inside(const Shape<T>& s, const Vec2c& o, double bound) {
   return oracle::contains(s, o) && oracle::compare_boundary_distance(s, o, bound) > 0;
 }
 
+/// n is an outward unit normal of s's boundary at p (p within bound of s), within the bound: the
+/// point q = p + L n lies outside s at distance >= L - slack (for a compound, outside some child
+/// that p is near). For a boundary point h with n in its normal cone, dist(h + L n, s) = L
+/// exactly; p and n are off h and the exact normal by their rounding, which slack covers. A
+/// wrong normal at angle theta loses about L theta^2 / 2, and a flipped one puts q inside.
+template <Scalar T>
+bool outward_normal(const Shape<T>& s, const Vec2c& p, const Vec2c& n, double bound) {
+  const Aabb<T> box = bounds(s);
+  const Vec2c size = (box.max().template cast<double>() - box.min().template cast<double>());
+  const double length = std::max(size.maxCoeff(), 0x1p20 * bound);
+  const double slack = 2 * bound + 4 * detail::eps<T>() * length;
+  const Vec2c q = p + n * length;
+  for (const Primitive<T>& child : detail::primitives_of(s)) {
+    if (!detail::near_boundary(child, p, bound)) continue;
+    if (!oracle::contains(child, q) && oracle::compare_boundary_distance(child, q, length - slack) >= 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+template <Scalar T>
+Verdict contains_law(const Shape<T>& s, const Vec2<T>& p) {
+  Verdict v;
+  try {
+    const bool got = contains(s, p);
+    const Vec2c q = p.template cast<double>();
+    v.account = "contains " + vec(p) + " " + detail::yes(got);
+    if (!std::isfinite(q.x()) || !std::isfinite(q.y())) {
+      if (got) {
+        v.ok = false;
+        v.expected = "false for a non-finite point";
+        v.got = "true";
+      }
+    } else {
+      const bool exact = oracle::contains(s, q);
+      v.relation = exact ? Relation::Contained : Relation::Separated;
+      v.account += ", exact " + detail::yes(exact);
+      if (got != exact) {
+        // A difference must come from a rounded child within the tolerance of its boundary.
+        const double tol = contains_tolerance(s, p);
+        bool allowed = false;
+        for (const Primitive<T>& child : detail::primitives_of(s)) {
+          const bool rounded = !std::holds_alternative<Aabb<T>>(child) && !std::holds_alternative<ConvexPolygon<T>>(child);
+          allowed = allowed || (rounded && detail::near_boundary(child, q, tol));
+        }
+        v.disagreement = true;
+        if (allowed) {
+          v.account += "; within contains_tolerance " + num(tol) + " of a rounded boundary: allowed";
+        } else {
+          v.ok = false;
+          v.expected = "contains " + detail::yes(exact);
+          v.got = "contains " + detail::yes(got);
+        }
+      }
+    }
+    if (!v.ok) v.account = "expected " + v.expected + "; got " + v.got + "; s = " + describe(s) + "; p = " + vec(p);
+  } catch (const std::exception& e) {
+    v.ok = false;
+    v.expected = "no exception";
+    v.got = e.what();
+    v.account = std::string("exception: ") + e.what() + "; s = " + describe(s) + "; p = " + vec(p);
+  }
+  return v;
+}
 
 template <Scalar T>
 Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
@@ -165,8 +219,14 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
       return v;
     }
     if (inside) {
-      if (t != 0 && deep_inside(s, o, bound))
+      if (t != 0 && deep_inside(s, o, bound)) {
         fail("t = 0 for an origin inside the shape (deeper than the bound)", "t " + num(t));
+      } else if (d != Vec2c::Zero() && deep_inside(s, o, bound)) {
+        const Vec2c dm = d / d.cwiseAbs().maxCoeff();  // exact scaling first: |d|^2 may underflow
+        const Vec2c n = hit->normal.template cast<double>();
+        if ((n + dm / dm.norm()).cwiseAbs().maxCoeff() > 8 * detail::eps<T>())
+          fail("normal -direction / |direction| for an origin inside", "normal " + vec(hit->normal));
+      }
       return v;
     }
     // t is returned in T: its rounding, relative or (when t underflows T) absolute, moves o + t d.
@@ -182,6 +242,34 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
     const double t_early = t - (len > 0 ? bound / len : 0);
     if (t_early > 0 && passes_deep(s, o, Vec2c(o + d * t_early), bound)) {
       fail("no point deeper than the bound before t", "the shape meets the ray before t " + num(t_early));
+      return v;
+    }
+    const Vec2c n = hit->normal.template cast<double>();
+    if (d == Vec2c::Zero()) {
+      // A zero direction hits only where it starts, with normal (0, 0) (raycast.hpp).
+      if (n != Vec2c::Zero()) fail("normal (0, 0) for a zero direction", "normal " + vec(hit->normal));
+      return v;
+    }
+    if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) {
+      fail("a unit hit normal", "normal " + vec(hit->normal) + " (|n| = " + num(n.norm()) + ")");
+      return v;
+    }
+    // At t = 0 the origin is on the shape (within the bound): -direction / |direction| as for an
+    // origin inside, or the outward normal where the ray enters.
+    const Vec2c dm = d / d.cwiseAbs().maxCoeff();  // exact scaling first: |d|^2 may underflow
+    const Vec2c u = dm / dm.norm();
+    const bool backward = t == 0 && (n + u).cwiseAbs().maxCoeff() <= 8 * detail::eps<T>();
+    // The normal is judged where the ray really enters: 4 bounds past the point it is deeper than
+    // the bound inside. A ray grazing the shape within the bound, or a sliver thinner than that,
+    // has no reliable face.
+    if (!deep_inside(s, Vec2c(p + u * (4 * bound)), bound)) {
+      v.account += "; normal not judged (grazing within the bound)";
+      return v;
+    }
+    if (!backward && !outward_normal(s, p, n, bound)) {
+      fail(std::string("the outward normal of the boundary at the hit point") +
+               (t == 0 ? " (or -direction / |direction| at t = 0)" : ""),
+           "normal " + vec(hit->normal));
       return v;
     }
   } catch (const std::exception& e) {
@@ -206,5 +294,7 @@ template Verdict bounds_law<float>(const Shape<float>&);
 template Verdict bounds_law<double>(const Shape<double>&);
 template Verdict raycast_law<float>(const Shape<float>&, const RayInput<float>&, float);
 template Verdict raycast_law<double>(const Shape<double>&, const RayInput<double>&, double);
+template Verdict contains_law<float>(const Shape<float>&, const Vec2<float>&);
+template Verdict contains_law<double>(const Shape<double>&, const Vec2<double>&);
 
 }  // namespace collide::laws

@@ -14,6 +14,7 @@
 
 namespace collide::laws::detail {
 
+using ::collide::laws::primitives_of;
 using ::collide::laws::turn;
 using ::collide::laws::turned;
 
@@ -98,6 +99,47 @@ constexpr double eps() {
 template <Scalar T>
 bool is_compound(const Shape<T>& s) {
   return std::holds_alternative<Compound<T>>(s);
+}
+
+/// The primitive has interior points (no zero radius, extent or width).
+template <Scalar T>
+bool has_interior(const Primitive<T>& p) {
+  return std::visit(
+      [](const auto& s) {
+        using S = std::remove_cvref_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Circle<T>> || std::is_same_v<S, Capsule<T>>) {
+          return s.radius() > 0;
+        } else if constexpr (std::is_same_v<S, Aabb<T>>) {
+          return s.min().x() < s.max().x() && s.min().y() < s.max().y();
+        } else if constexpr (std::is_same_v<S, Obb<T>>) {
+          return s.half_extents().x() > 0 && s.half_extents().y() > 0;
+        } else {
+          return true;  // a stored polygon is never collinear
+        }
+      },
+      p);
+}
+
+/// The primitive's core: a circle or capsule with radius 0 (other kinds are their own core).
+template <Scalar T>
+Primitive<T> core_primitive(const Primitive<T>& p) {
+  if (const auto* c = std::get_if<Circle<T>>(&p)) return Circle<T>(c->center(), T(0));
+  if (const auto* c = std::get_if<Capsule<T>>(&p)) return Capsule<T>(c->a(), c->b(), T(0));
+  return p;
+}
+
+/// The primitive is rounded: a circle or capsule with a positive radius.
+template <Scalar T>
+bool is_rounded(const Primitive<T>& p) {
+  if (const auto* c = std::get_if<Circle<T>>(&p)) return c->radius() > 0;
+  if (const auto* c = std::get_if<Capsule<T>>(&p)) return c->radius() > 0;
+  return false;
+}
+
+/// p is within d of the boundary of the closed primitive s (inside or outside), exactly.
+template <Scalar T>
+bool near_boundary(const Primitive<T>& s, const Vec2<double>& p, double d) {
+  return oracle::compare_boundary_distance(s, p, d) <= 0;
 }
 
 /// p is farther than d from the closed shape s, exactly. Asked through the point's distance to

@@ -5,15 +5,20 @@
 #include "support.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace collide::laws {
 
 namespace {
 
 constexpr double kSize = 600;
-constexpr double kMargin = 40;
+constexpr double kMargin = 50;
+constexpr double kLineHeight = 14;
+constexpr std::size_t kWrap = 96;      // characters per caption line (11 px monospace in 600 px)
+constexpr double kMinVisible = 3;      // px: a shape drawn smaller gets a marker
 
 /// World -> picture: fit the world box into the square, y up.
 struct View {
@@ -21,9 +26,17 @@ struct View {
   double scale() const { return (kSize - 2 * kMargin) / std::max({x1 - x0, y1 - y0, 1e-300}); }
   double px(double x) const { return kMargin + (x - x0) * scale(); }
   double py(double y) const { return kSize - kMargin - (y - y0) * scale(); }
-  std::string pt(const Vec2c& p) const { return detail::num(px(p.x())) + "," + detail::num(py(p.y())); }
 };
 
+/// A number for an attribute: finite, short (pixels need no more).
+std::string f(double x) {
+  if (!std::isfinite(x)) x = 0;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+/// Text content: XML-escaped, control characters dropped (they are not allowed in XML 1.0).
 std::string escape(const std::string& s) {
   std::string out;
   for (char ch : s) {
@@ -31,15 +44,32 @@ std::string escape(const std::string& s) {
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '&': out += "&amp;"; break;
-      default: out += ch;
+      case '\'': out += "&apos;"; break;
+      case '"': out += "&quot;"; break;
+      default:
+        if (static_cast<unsigned char>(ch) >= 0x20 || ch == '\t') out += ch;
     }
   }
   return out;
 }
 
-template <Scalar T>
-void grow(View& v, bool& first, const Aabb<T>& b) {
-  const double lx = b.min().x(), ly = b.min().y(), hx = b.max().x(), hy = b.max().y();
+/// Lines of at most kWrap characters, broken at spaces where possible (nothing is cut off).
+std::vector<std::string> wrap(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string rest = text;
+  while (rest.size() > kWrap) {
+    std::size_t cut = rest.rfind(' ', kWrap);
+    if (cut == std::string::npos || cut < kWrap / 2) cut = kWrap;
+    lines.push_back(rest.substr(0, cut));
+    rest = rest.substr(cut == kWrap ? cut : cut + 1);
+    rest.insert(0, "    ");
+  }
+  lines.push_back(rest);
+  return lines;
+}
+
+void grow(View& v, bool& first, double lx, double ly, double hx, double hy) {
+  if (!std::isfinite(lx) || !std::isfinite(ly) || !std::isfinite(hx) || !std::isfinite(hy)) return;
   if (first) {
     v = {lx, ly, hx, hy};
     first = false;
@@ -51,72 +81,134 @@ void grow(View& v, bool& first, const Aabb<T>& b) {
   v.y1 = std::max(v.y1, hy);
 }
 
-void grow_point(View& v, bool& first, const Vec2c& p) {
-  grow(v, first, Aabb<double>(p, p));
+template <Scalar T>
+void grow(View& v, bool& first, const Aabb<T>& b) {
+  grow(v, first, double(b.min().x()), double(b.min().y()), double(b.max().x()), double(b.max().y()));
 }
 
+/// Colour and look of one shape; every attribute written once.
+struct Style {
+  std::string colour;
+  double fill_opacity = 0.3;
+  std::string dash;  // stroke-dasharray, or empty
+  std::string attrs(double stroke_width = 1.5, bool filled = true) const {
+    std::string out = "stroke='" + colour + "' stroke-width='" + f(stroke_width) + "'";
+    out += filled ? " fill='" + colour + "' fill-opacity='" + f(fill_opacity) + "'" : " fill='none'";
+    if (!dash.empty()) out += " stroke-dasharray='" + dash + "'";
+    return out;
+  }
+};
+
+/// A ring and cross of fixed size at p: where a shape too small to see lies.
+void marker(std::ostream& out, const View& v, const Vec2c& p, const Style& st) {
+  const double x = v.px(p.x()), y = v.py(p.y());
+  out << "<circle cx='" << f(x) << "' cy='" << f(y) << "' r='6' " << st.attrs(1.5, false) << "/>\n";
+  out << "<path d='M" << f(x - 9) << ',' << f(y) << " H" << f(x + 9) << " M" << f(x) << ',' << f(y - 9) << " V"
+      << f(y + 9) << "' " << st.attrs(1, false) << "/>\n";
+}
+
+/// Draws a primitive; returns true when it is below kMinVisible pixels (a marker is drawn too).
 template <Scalar T>
-void draw_primitive(std::ostream& out, const View& v, const Primitive<T>& p, const std::string& style) {
+bool draw_primitive(std::ostream& out, const View& v, const Primitive<T>& p, const Style& st) {
+  const Aabb<T> box = bounds(p);
+  const double size = std::max(double(box.max().x()) - double(box.min().x()), double(box.max().y()) - double(box.min().y())) * v.scale();
   std::visit(
       [&](const auto& s) {
         using S = std::remove_cvref_t<decltype(s)>;
         if constexpr (std::is_same_v<S, Circle<T>>) {
-          out << "<circle cx='" << v.px(s.center().x()) << "' cy='" << v.py(s.center().y()) << "' r='"
-              << double(s.radius()) * v.scale() << "' " << style << "/>\n";
+          out << "<circle cx='" << f(v.px(s.center().x())) << "' cy='" << f(v.py(s.center().y())) << "' r='"
+              << f(std::max(double(s.radius()) * v.scale(), 0.75)) << "' " << st.attrs() << "/>\n";
         } else if constexpr (std::is_same_v<S, Capsule<T>>) {
-          const double w = 2 * double(s.radius()) * v.scale();
-          out << "<line x1='" << v.px(s.a().x()) << "' y1='" << v.py(s.a().y()) << "' x2='" << v.px(s.b().x())
-              << "' y2='" << v.py(s.b().y()) << "' stroke-width='" << std::max(w, 1.0)
-              << "' stroke-linecap='round' " << style << " fill='none' stroke-opacity='0.35'/>\n";
-          out << "<line x1='" << v.px(s.a().x()) << "' y1='" << v.py(s.a().y()) << "' x2='" << v.px(s.b().x())
-              << "' y2='" << v.py(s.b().y()) << "' " << style << "/>\n";
+          const std::string ends = "x1='" + f(v.px(s.a().x())) + "' y1='" + f(v.py(s.a().y())) + "' x2='" +
+                                   f(v.px(s.b().x())) + "' y2='" + f(v.py(s.b().y())) + "'";
+          out << "<line " << ends << " stroke='" << st.colour << "' stroke-opacity='0.35' stroke-width='"
+              << f(std::max(2 * double(s.radius()) * v.scale(), 1.0)) << "' stroke-linecap='round'/>\n";
+          out << "<line " << ends << ' ' << st.attrs(1.5, false) << "/>\n";
         } else {
           const ::collide::detail::Core core = ::collide::detail::core_of(s);
           out << "<polygon points='";
-          for (const Vec2c& q : core.pts()) out << v.pt(q) << ' ';
-          out << "' " << style << "/>\n";
+          for (const Vec2c& q : core.pts()) out << f(v.px(q.x())) << ',' << f(v.py(q.y())) << ' ';
+          out << "' " << st.attrs() << "/>\n";
         }
       },
       p);
+  if (size < kMinVisible) {
+    const Vec2c c = (box.min().template cast<double>() + box.max().template cast<double>()) / 2;
+    marker(out, v, c, st);
+    return true;
+  }
+  return false;
 }
 
 template <Scalar T>
-void draw_shape(std::ostream& out, const View& v, const Shape<T>& s, const std::string& style) {
-  if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    for (const Primitive<T>& p : c->children()) draw_primitive(out, v, p, style);
-    return;
-  }
-  std::visit(
-      [&](const auto& x) {
-        using S = std::remove_cvref_t<decltype(x)>;
-        if constexpr (!std::is_same_v<S, Compound<T>>) draw_primitive(out, v, Primitive<T>(x), style);
-      },
-      s);
+bool draw_shape(std::ostream& out, const View& v, const Shape<T>& s, const Style& st) {
+  bool tiny = false;
+  for (const Primitive<T>& p : detail::primitives_of(s)) tiny = draw_primitive(out, v, p, st) || tiny;
+  return tiny;
 }
 
 template <Scalar T>
 void draw_box(std::ostream& out, const View& v, const Aabb<T>& b, const std::string& colour) {
-  out << "<rect x='" << v.px(b.min().x()) << "' y='" << v.py(b.max().y()) << "' width='"
-      << (double(b.max().x()) - double(b.min().x())) * v.scale() << "' height='"
-      << (double(b.max().y()) - double(b.min().y())) * v.scale() << "' fill='none' stroke='" << colour
+  out << "<rect x='" << f(v.px(b.min().x())) << "' y='" << f(v.py(b.max().y())) << "' width='"
+      << f((double(b.max().x()) - double(b.min().x())) * v.scale()) << "' height='"
+      << f((double(b.max().y()) - double(b.min().y())) * v.scale()) << "' fill='none' stroke='" << colour
       << "' stroke-dasharray='4 3' stroke-width='0.8'/>\n";
 }
 
 void arrow(std::ostream& out, const View& v, const Vec2c& from, const Vec2c& to, const std::string& colour) {
-  out << "<line x1='" << v.px(from.x()) << "' y1='" << v.py(from.y()) << "' x2='" << v.px(to.x()) << "' y2='"
-      << v.py(to.y()) << "' stroke='" << colour << "' stroke-width='2' marker-end='url(#head)'/>\n";
+  out << "<line x1='" << f(v.px(from.x())) << "' y1='" << f(v.py(from.y())) << "' x2='" << f(v.px(to.x()))
+      << "' y2='" << f(v.py(to.y())) << "' stroke='" << colour << "' stroke-width='2' marker-end='url(#head)'/>\n";
+}
+
+void text(std::ostream& out, double x, double y, const std::string& s, const std::string& anchor = "start") {
+  out << "<text x='" << f(x) << "' y='" << f(y) << "' font-family='monospace' font-size='11' text-anchor='" << anchor
+      << "'>" << escape(s) << "</text>\n";
+}
+
+/// The frame with the world coordinates of its corners, the axes where they cross the view, and a
+/// scale bar of a round length.
+void draw_axes(std::ostream& out, const View& v) {
+  const double lo = kMargin, hi = kSize - kMargin;
+  out << "<rect x='" << f(lo) << "' y='" << f(lo) << "' width='" << f(hi - lo) << "' height='" << f(hi - lo)
+      << "' fill='none' stroke='#999' stroke-width='0.5'/>\n";
+  if (v.x0 <= 0 && 0 <= v.x1)
+    out << "<line x1='" << f(v.px(0)) << "' y1='" << f(lo) << "' x2='" << f(v.px(0)) << "' y2='" << f(hi)
+        << "' stroke='#bbb' stroke-width='0.8'/>\n";
+  if (v.y0 <= 0 && 0 <= v.y1)
+    out << "<line x1='" << f(lo) << "' y1='" << f(v.py(0)) << "' x2='" << f(hi) << "' y2='" << f(v.py(0))
+        << "' stroke='#bbb' stroke-width='0.8'/>\n";
+  text(out, lo, hi + 13, "x " + detail::num(v.x0));
+  text(out, hi, hi + 13, "x " + detail::num(v.x1), "end");
+  text(out, lo - 4, hi, "y " + detail::num(v.y0), "end");
+  out << "<text x='" << f(lo - 4) << "' y='" << f(lo + 10) << "' font-family='monospace' font-size='11' "
+      << "text-anchor='end' transform='rotate(-90 " << f(lo - 4) << ' ' << f(lo + 10) << ")'>y "
+      << escape(detail::num(v.y1)) << "</text>\n";
+  // Scale bar: the largest 1, 2 or 5 times a power of ten not longer than a quarter of the view.
+  const double span = (v.x1 - v.x0) / 4;
+  if (span > 0 && std::isfinite(span)) {
+    double unit = std::pow(10.0, std::floor(std::log10(span)));
+    for (const double m : {5.0, 2.0}) {
+      if (unit * m <= span) {
+        unit *= m;
+        break;
+      }
+    }
+    const double len = unit * v.scale(), y = lo - 14;
+    out << "<path d='M" << f(hi - len) << ',' << f(y - 4) << " V" << f(y) << " H" << f(hi) << " V" << f(y - 4)
+        << "' fill='none' stroke='#222' stroke-width='1.2'/>\n";
+    text(out, hi - len - 6, y, detail::num(unit), "end");
+  }
 }
 
 template <Scalar T>
 void draw(std::ostream& out, const Case& c) {
-  const std::string blue = "fill='#3366cc' fill-opacity='0.3' stroke='#3366cc' stroke-width='1.5'";
-  const std::string red = "fill='#cc3333' fill-opacity='0.3' stroke='#cc3333' stroke-width='1.5'";
-  const std::string moved = "fill='none' stroke='#339933' stroke-width='1.5' stroke-dasharray='6 3'";
+  const Style blue{"#3366cc", 0.3, ""}, red{"#cc3333", 0.3, ""}, moved{"#339933", 0, "6 3"};
   View v;
   bool first = true;
   std::optional<Shape<T>> a, b, a2, b2;
-  std::string note;
+  std::vector<std::string> notes;
   std::optional<std::pair<Vec2c, Vec2c>> push;
+  std::optional<Vec2c> point;
   try {
     if (c.law != "rejection") a = from_data<T>(c.a);
     if (c.b && c.law != "rejection") b = from_data<T>(*c.b);
@@ -132,7 +224,7 @@ void draw(std::ostream& out, const Case& c) {
       const Aabb<T> box = bounds(*a);
       const Vec2c mid = (box.min().template cast<double>() + box.max().template cast<double>()) / 2;
       push = std::pair{mid, Vec2c(mid + r.template cast<double>())};
-      note = "resolve(a, b) = (" + detail::num(r.x()) + ", " + detail::num(r.y()) + "), moved a dashed green";
+      notes.push_back("resolve(a, b) = (" + detail::num(r.x()) + ", " + detail::num(r.y()) + "), moved a dashed green");
     }
     if (a && b && c.law == "translation") {
       const Vec2<T> t(static_cast<T>(c.tx), static_cast<T>(c.ty));
@@ -143,48 +235,66 @@ void draw(std::ostream& out, const Case& c) {
         grow(v, first, bounds(*a2));
         grow(v, first, bounds(*b2));
       }
-      note = "moved pair dashed green";
+      notes.push_back("moved pair dashed green, t = (" + detail::num(c.tx) + ", " + detail::num(c.ty) + ")");
     }
     if (c.law == "raycast") {
       const Vec2c o(c.ox, c.oy), e = o + Vec2c(c.dx, c.dy) * c.max_t;
-      grow_point(v, first, o);
-      grow_point(v, first, e);
+      grow(v, first, o.x(), o.y(), o.x(), o.y());
+      grow(v, first, e.x(), e.y(), e.x(), e.y());
       push = std::pair{o, e};
-      note = "ray to max_t";
+      notes.push_back("ray (" + detail::num(c.ox) + ", " + detail::num(c.oy) + ") + t (" + detail::num(c.dx) + ", " +
+                      detail::num(c.dy) + "), arrow to max_t " + detail::num(c.max_t));
+    }
+    if (c.law == "contains") {
+      point = Vec2c(c.ox, c.oy);
+      grow(v, first, c.ox, c.oy, c.ox, c.oy);
+      notes.push_back("point (" + detail::num(c.ox) + ", " + detail::num(c.oy) + "), black ring");
     }
   } catch (const std::exception& e) {
-    note = std::string("cannot draw: ") + e.what();
+    notes.push_back(std::string("cannot draw: ") + e.what());
   }
   if (first) v = {-1, -1, 1, 1};
   // Square, padded world box (a point or a flat box still gets a visible frame).
-  const double w = std::max({v.x1 - v.x0, v.y1 - v.y0, std::fabs(v.x0) * 1e-12, 1e-300});
-  const double cx = (v.x0 + v.x1) / 2, cy = (v.y0 + v.y1) / 2;
+  const double w = std::max({v.x1 - v.x0, v.y1 - v.y0, std::fabs(v.x0) * 1e-12, std::fabs(v.y0) * 1e-12, 1e-300});
+  const double cx = v.x0 / 2 + v.x1 / 2, cy = v.y0 / 2 + v.y1 / 2;
   v = {cx - 0.55 * w, cy - 0.55 * w, cx + 0.55 * w, cy + 0.55 * w};
 
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << kSize << "' height='" << kSize + 60 << "' viewBox='0 0 "
-      << kSize << ' ' << kSize + 60 << "'>\n";
+  std::ostringstream body;
+  draw_axes(body, v);
+  bool tiny = false;
+  if (a) {
+    draw_box(body, v, bounds(*a), blue.colour);
+    tiny = draw_shape(body, v, *a, blue) || tiny;
+  }
+  if (b) {
+    draw_box(body, v, bounds(*b), red.colour);
+    tiny = draw_shape(body, v, *b, red) || tiny;
+  }
+  if (a2) tiny = draw_shape(body, v, *a2, moved) || tiny;
+  if (b2) tiny = draw_shape(body, v, *b2, moved) || tiny;
+  if (push) arrow(body, v, push->first, push->second, "#222");
+  if (point) marker(body, v, *point, Style{"#222", 0, ""});
+  if (tiny) notes.push_back("ring and cross: a shape smaller than " + detail::num(kMinVisible) + " px, drawn enlarged");
+
+  std::vector<std::string> lines = {c.law + "  " + pair_name(c) + "  " + c.scalar + "  (a blue, b red)"};
+  if (a) lines.push_back("a = " + detail::describe(*a));
+  if (b) lines.push_back("b = " + detail::describe(*b));
+  lines.push_back("expected: " + c.expected);
+  lines.push_back("got: " + c.got);
+  for (const std::string& n : notes) lines.push_back(n);
+  lines.push_back("source: " + c.source);
+  std::vector<std::string> wrapped;
+  for (const std::string& l : lines)
+    for (const std::string& w2 : wrap(l)) wrapped.push_back(w2);
+  const double height = kSize + 10 + kLineHeight * double(wrapped.size());
+
+  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << f(kSize) << "' height='" << f(height) << "' viewBox='0 0 "
+      << f(kSize) << ' ' << f(height) << "'>\n";
   out << "<defs><marker id='head' markerWidth='8' markerHeight='8' refX='6' refY='3' orient='auto'>"
          "<path d='M0,0 L6,3 L0,6 z' fill='#222'/></marker></defs>\n";
   out << "<rect width='100%' height='100%' fill='white'/>\n";
-  if (a) {
-    draw_box(out, v, bounds(*a), "#3366cc");
-    draw_shape(out, v, *a, blue);
-  }
-  if (b) {
-    draw_box(out, v, bounds(*b), "#cc3333");
-    draw_shape(out, v, *b, red);
-  }
-  if (a2) draw_shape(out, v, *a2, moved);
-  if (b2) draw_shape(out, v, *b2, moved);
-  if (push) arrow(out, v, push->first, push->second, "#222");
-  auto caption = [&](double y, const std::string& text) {
-    out << "<text x='8' y='" << y << "' font-family='monospace' font-size='11'>" << escape(text.substr(0, 110))
-        << "</text>\n";
-  };
-  caption(kSize + 14, c.law + "  " + pair_name(c) + "  " + c.scalar + "  (a blue, b red)");
-  caption(kSize + 28, "expected: " + c.expected);
-  caption(kSize + 42, "got: " + c.got);
-  caption(kSize + 56, note.empty() ? "source: " + c.source : note);
+  out << body.str();
+  for (std::size_t i = 0; i < wrapped.size(); ++i) text(out, 8, kSize + 6 + kLineHeight * double(i + 1), wrapped[i]);
   out << "</svg>\n";
 }
 

@@ -18,6 +18,7 @@
 ///     translation 0x1p+0 0x1p-3                       # translation law
 ///     rotation 1 mirror 0                             # rotation law
 ///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast law: origin, direction
+///     point 0x1p+0 -0x1p-2                            # contains law: the point (kept in ox, oy)
 ///     values 0x1p+0 nan -inf                          # rejection law: raw values (kind = shape a's)
 ///     expected overlaps true
 ///     got overlaps false
@@ -64,7 +65,7 @@ struct Case {
   double tx = 0, ty = 0;           ///< translation law: the move
   int quarter_turns = 0;           ///< rotation law
   bool mirror = false;             ///< rotation law
-  double ox = 0, oy = 0, dx = 0, dy = 0, max_t = 0;  ///< raycast law: ray origin, direction, max_t
+  double ox = 0, oy = 0, dx = 0, dy = 0, max_t = 0;  ///< raycast law: ray origin, direction, max_t; contains law: the point (ox, oy)
   std::vector<double> values;      ///< rejection law: raw values for shape a's kind
   std::string expected;            ///< what the law expected (oracle side), one line
   std::string got;                 ///< what the library answered, one line

@@ -100,6 +100,10 @@ struct RayInput {
 /// t = 0; before the hit (or up to max_t when there is none) the ray passes no point deeper than
 /// delta inside the shape, checked by oracle::segment_meets against the shape shrunk by delta
 /// (circles, capsules, AABBs, OBBs and such compound children; polygons are not shrunk here).
+/// The hit normal: a unit vector; at t = 0, -direction / |direction|; otherwise an outward normal
+/// of the boundary at the point: q = point + L * normal (L the shape's size, at least 2^20 bounds)
+/// lies outside the shape (for compounds, outside some child near the point) at distance at least
+/// L - 2 bounds - 4 eps_T L, which holds for every normal in the boundary's normal cone there.
 template <Scalar T>
 Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t);
 
@@ -119,14 +123,43 @@ Verdict representation(const Shape<T>& a, const Shape<T>& x);
 
 /// Law 8b. contact(a, b) exists exactly when overlaps(a, b); its normal is a unit vector, its
 /// depth >= 0 and, for primitives, within 4 tolerances of the exact depth (plus T's rounding);
-/// each contact point lies within depth + 4 tolerances of both shapes.
+/// each contact point lies within depth + 4 tolerances of both shapes. Direction: moving a by
+/// -normal * (depth + 2 bounds) separates it from b (oracle::separates; for compounds, some
+/// overlapping child pair). Midway, for two primitives with interiors that overlap without
+/// containment, both without radius or with disjoint cores: each point lies within 3/4 depth +
+/// 2 bounds of both boundaries (the middle half between the surfaces), so a point on one shape's
+/// face of a deep contact fails.
+/// bound = 4 rounding tolerances + T's rounding of depth and points.
 template <Scalar T>
 Verdict contact_law(const Shape<T>& a, const Shape<T>& b);
 
 /// Law 8c. distance(a, b) is 0 exactly when overlaps(a, b), and otherwise within 4 tolerances
-/// (plus T's rounding) of the exact gap (oracle::compare_distance).
+/// (plus T's rounding) of the exact gap (oracle::compare_distance): a distance of 0 for shapes
+/// 3 apart fails, as does any value off the exact gap by more than the bound.
 template <Scalar T>
 Verdict distance_law(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 8d. contains(s, p) equals oracle::contains(s, p). Exact for AABBs and polygons (and
+/// compounds of them); for circles, capsules and OBBs a difference is allowed only when p lies
+/// within contains_tolerance(s, p) of the boundary (of the child that differs), and is then a
+/// disagreement. NaN or infinite points: false.
+template <Scalar T>
+Verdict contains_law(const Shape<T>& s, const Vec2<T>& p);
+
+/// Law 8e. Touching judged exactly: when the oracle says a and b touch (signed distance exactly
+/// 0), overlaps(a, b) and overlaps(b, a) are true, for every pair (no band); when the oracle says
+/// they are apart or overlapping by more than overlap_tolerance(a, b), both answers equal the
+/// oracle's; within the band (signed distance not 0) a difference is a disagreement.
+template <Scalar T>
+Verdict touching(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 8f. A scene (the children of the compound `group`, each taken as a shape):
+/// broadphase::find_overlapping_shapes() lists exactly the pairs overlaps() reports one pair at a
+/// time, find_contacts() gives one contact per such pair identical to contact(), and
+/// pairs_involving() on a DynamicTree of their bounds gives each pair of meeting boxes with a proxy
+/// in the first half exactly once.
+template <Scalar T>
+Verdict scene(const Shape<T>& group);
 
 /// Law 9. Building a shape of `kind` from raw values (any bit patterns) through its make():
 /// NaN or infinity gives Error::NonFinite, a magnitude above max_magnitude<T>() Error::OutOfRange
@@ -142,6 +175,7 @@ Verdict rejection(ShapeKind kind, std::span<const T> values);
 inline constexpr std::string_view kLawNames[] = {"agreement",  "symmetry",       "translation",
                                                  "rotation",   "resolution",     "bounds",
                                                  "raycast",    "hierarchy",      "representation",
-                                                 "contact",    "distance",       "rejection"};
+                                                 "contact",    "distance",       "rejection",
+                                                 "contains",   "touching",       "scene"};
 
 }  // namespace collide::laws

@@ -1,7 +1,8 @@
 #pragma once
 /// @file transform.hpp
 /// Exact transforms of stored shapes used by the rotation law and the generators: quarter turns
-/// about the origin and mirroring x -> -x (negation and swapping are exact on every value).
+/// about the origin and mirroring x -> -x (negation and swapping are exact on every value); and
+/// the primitives a shape is made of.
 
 #include "collide/collide.hpp"
 
@@ -9,6 +10,22 @@
 #include <vector>
 
 namespace collide::laws {
+
+/// The primitives of a shape: a compound's children, or the shape itself.
+template <Scalar T>
+std::vector<Primitive<T>> primitives_of(const Shape<T>& s) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) return c->children();
+  return {std::visit(
+      [](const auto& x) -> Primitive<T> {
+        using S = std::remove_cvref_t<decltype(x)>;
+        if constexpr (std::is_same_v<S, Compound<T>>) {
+          return x.children().front();  // unreachable: handled above
+        } else {
+          return x;
+        }
+      },
+      s)};
+}
 
 /// Quarter turns (x, y) -> (-y, x), k times, then x -> -x when mirror. Exact.
 template <Scalar T>
