@@ -42,8 +42,9 @@ constexpr T max_magnitude() noexcept {
 /// pairs mixing tiny and ordinary magnitudes, whose squares can still underflow.
 inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 
-/// Relative factor of the overlap error bound, in units of double's unit roundoff (2^-53).
-/// See overlap_tolerance() in queries.hpp.
+/// Relative factor of the error unit of rounded outputs (depths, normals, distances), in units
+/// of double's unit roundoff (2^-53). See rounding_tolerance() in queries.hpp; overlap decisions
+/// are exact and have no tolerance.
 inline constexpr Calc kOverlapErrorFactor = 64.0;
 
 }  // namespace collide
