@@ -185,7 +185,37 @@ inline bool obb_meets_core(const ObbValues& o, const Core& k) noexcept {
   return !obb_face_separates(o, k.pts()) && !core_edge_separates_obb(k, o);
 }
 
+/// OBB against OBB by the four face axes in double: +1 overlapping, -1 separated, 2 when some
+/// axis is too close to call. On the axis w of box P (w = u_P or perp(u_P)) the boxes are
+/// separated iff g = |d . w| - h_P |u_P|^2 - hx_Q |u_Q . w| - hy_Q |perp(u_Q) . w| > 0, d = c_Q - c_P
+/// (the corner test of obb_face_separates, summed). Each term of g carries at most seven
+/// roundings of its exact value, so |error| <= 7.01 u M, M the sum of the terms' magnitudes; 16 u M
+/// is used. Sums M below 2^-900 are left undecided (an underflowing product breaks the bound).
+inline int filtered_obb_obb(const ObbValues& a, const ObbValues& b) noexcept {
+  bool unsure = false;
+  auto axis = [&unsure](const ObbValues& p, const ObbValues& q, const Vec2c& w, Calc hp) {
+    const Vec2c d = q.c - p.c;
+    const Vec2c vq = perp(q.u);
+    const Calc along = d.x() * w.x() + d.y() * w.y();
+    const Calc uq = q.u.x() * w.x() + q.u.y() * w.y(), vw = vq.x() * w.x() + vq.y() * w.y();
+    const Calc rp = hp * (p.u.x() * p.u.x() + p.u.y() * p.u.y());
+    const Calc rq = q.hx * std::fabs(uq) + q.hy * std::fabs(vw);
+    const Calc g = std::fabs(along) - rp - rq;
+    const Calc aw = std::fabs(w.x()), bw = std::fabs(w.y());
+    const Calc m = std::fabs(d.x()) * aw + std::fabs(d.y()) * bw + rp +
+                   q.hx * (std::fabs(q.u.x()) * aw + std::fabs(q.u.y()) * bw) +
+                   q.hy * (std::fabs(vq.x()) * aw + std::fabs(vq.y()) * bw);
+    const Calc bound = 16 * 0x1p-53 * m;
+    if (!(m > 0x1p-900) || !(std::fabs(g) > bound)) unsure = true;
+    return g > bound && m > 0x1p-900;
+  };
+  if (axis(a, b, a.u, a.hx) || axis(a, b, perp(a.u), a.hy) || axis(b, a, b.u, b.hx) || axis(b, a, perp(b.u), b.hy))
+    return -1;
+  return unsure ? 2 : 1;
+}
+
 inline bool obb_meets_obb(const ObbValues& a, const ObbValues& b) noexcept {
+  if (const int s = filtered_obb_obb(a, b); s != 2) [[likely]] return s > 0;
   const std::array<ObbCorner, 4> ca = a.corners(), cb = b.corners();
   return !obb_face_separates(a, std::span<const ObbCorner>(cb)) &&
          !obb_face_separates(b, std::span<const ObbCorner>(ca));
@@ -195,6 +225,33 @@ inline bool obb_meets_obb(const ObbValues& a, const ObbValues& b) noexcept {
 /// excess beyond the faces times |u|), the squared distance times |u|^2 is the sum of the
 /// positive e_k^2.
 inline bool point_obb_within(const Vec2c& p, const ObbValues& o, const Radii& r) noexcept {
+  {
+    // One filtered pass over the whole decision; the exact signs below only when it is unsure.
+    const Bounded ux(o.u.x()), uy(o.u.y());
+    const Bounded uu = ux * ux + uy * uy;
+    const Bounded dx = Bounded(p.x()) - Bounded(o.c.x()), dy = Bounded(p.y()) - Bounded(o.c.y());
+    const Bounded along[2] = {dx * ux + dy * uy, dy * ux - dx * uy};
+    const Calc h[2] = {o.hx, o.hy};
+    Bounded sum = Bounded(0.0);
+    bool sure = true, outside = false;
+    for (int axis = 0; axis < 2 && sure; ++axis) {
+      // ||x| - |y|| <= |x - y|: |along| keeps along's bound whatever its rounded sign.
+      const Bounded a = along[axis].v < 0 ? -along[axis] : along[axis];
+      const Bounded e = a - Bounded(h[axis]) * uu;
+      const int se = e.certain_sign();
+      if (se == 2) sure = false;
+      if (se > 0) {
+        outside = true;
+        sum = sum + e * e;
+      }
+    }
+    if (sure) {
+      if (!outside) return true;
+      const Bounded rr = r.value<Bounded>();
+      const int sg = (sum - rr * rr * uu).certain_sign();
+      if (sg != 2) return sg <= 0;
+    }
+  }
   int side[2] = {0, 0};  // the side (+-1) p is strictly beyond, per axis; 0 when within the slab
   for (int axis = 0; axis < 2; ++axis) {
     if (sign_face_excess(p, o, axis, 1) > 0) {
