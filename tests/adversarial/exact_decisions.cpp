@@ -6,10 +6,14 @@
 // adjacent values: exact touching whenever it is representable), and every coordinate of b is then
 // nudged by 1..4 ulps each way. Contains() likewise for a point sliding out of a shape.
 //
-// Usage: adversarial_exact_decisions [--cases N] [--seed S]. Prints the number of cases judged,
-// the time, the disagreements per pair; exits 1 on any disagreement.
+// Usage: adversarial_exact_decisions [--cases N] [--seed S] [--save-cases DIR]. Prints the number
+// of cases judged, the time, the disagreements per pair; exits 1 on any disagreement. With
+// --save-cases, the first overlap disagreements of each pair are written there as agreement case
+// files (for tests/regressions/).
 
 #include "collide/collide.hpp"
+#include "collide/laws/case_file.hpp"
+#include "collide/laws/laws.hpp"
 #include "collide/oracle/oracle.hpp"
 
 #include <chrono>
@@ -255,6 +259,8 @@ struct Tally {
   std::uint64_t cases = 0, disagreements = 0, overlap_cases = 0, contains_cases = 0, skipped = 0;
   std::map<std::string, std::uint64_t> per_label, bad_label;
   int printed = 0;
+  std::string save_dir;
+  std::uint64_t seed = 0;
 };
 
 template <Scalar T>
@@ -313,7 +319,12 @@ void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Sha
   ++t.per_label[label];
   if (got == exact) return;
   ++t.disagreements;
-  ++t.bad_label[label];
+  if (++t.bad_label[label] <= 2 && !t.save_dir.empty()) {
+    const auto path = laws::save_case(t.save_dir, laws::make_case<T>("agreement", a, b, laws::agreement(a, b),
+                                                                     "adversarial exact_decisions seed " +
+                                                                         std::to_string(t.seed)));
+    std::printf("saved %s\n", path.string().c_str());
+  }
   if (t.printed++ < 8)
     std::printf("DISAGREE %s: overlaps %d, exact %d\n  a = %s\n  b = %s\n", label.c_str(), got, exact,
                 text(a).c_str(), text(b).c_str());
@@ -456,18 +467,23 @@ void pythagorean(Rng& g, Tally& t) {
 
 int main(int argc, char** argv) {
   std::uint64_t cases = 20000, seed = 1;
+  std::string save_dir;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--cases") && i + 1 < argc) {
       cases = std::strtoull(argv[++i], nullptr, 10);
     } else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc) {
       seed = std::strtoull(argv[++i], nullptr, 10);
+    } else if (!std::strcmp(argv[i], "--save-cases") && i + 1 < argc) {
+      save_dir = argv[++i];
     } else {
-      std::fprintf(stderr, "usage: %s [--cases N] [--seed S]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--cases N] [--seed S] [--save-cases DIR]\n", argv[0]);
       return 2;
     }
   }
   Rng g{seed};
   Tally t;
+  t.save_dir = save_dir;
+  t.seed = seed;
   const auto start = std::chrono::steady_clock::now();
   while (t.cases < cases) {
     const int what = g.below(10);

@@ -159,6 +159,17 @@ int register_pairs(const char* suite) {
 const int kRegisteredFloat = register_pairs<float>("PairsFloat");
 const int kRegisteredDouble = register_pairs<double>("PairsDouble");
 
+// A zero-length capsule (a point core) against a segment capsule: the point's distance to the
+// segment decides, not only the distances between endpoints.
+TEST(Pairs, PointCapsuleMeetsSegmentCapsuleBySegmentDistance) {
+  using V = Vec2<double>;
+  const Capsule<double> seg(V(-10, 0), V(10, 0), 1);
+  const Capsule<double> dot(V(0, 3), V(0, 3), 2);  // 3 above the segment's middle, radii 1 + 2
+  EXPECT_TRUE(overlaps(seg, dot));
+  EXPECT_TRUE(overlaps(dot, seg));
+  EXPECT_FALSE(overlaps(seg, Capsule<double>(V(0, std::nextafter(3.0, 4.0)), V(0, std::nextafter(3.0, 4.0)), 2)));
+}
+
 // The registration covered the whole registry (a for_each_pair that skipped pairs would show).
 TEST(Pairs, EveryRegistryPairIsRegistered) {
   EXPECT_EQ(kRegisteredFloat, int(kPairCount));

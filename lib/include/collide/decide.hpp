@@ -9,8 +9,9 @@
 /// Exact for every pair and both scalars: each answer is the exact answer for the stored values
 /// (OBB corners are never rounded: they enter as the polynomials c +- hx u +- hy perp(u)). Every
 /// decision is the sign of a polynomial of degree <= 6 in the stored values; a floating-point
-/// filter with a proven error bound (detail::Bounded, or a static bound for the three hot pairs)
-/// decides almost every call, and the rest are evaluated exactly (detail::Exact).
+/// filter with a proven error bound (a static bound for circle-circle, circle-AABB and OBB-OBB,
+/// detail::Bounded elsewhere; AABB-AABB is comparisons only) decides almost every call, and the
+/// rest are evaluated exactly (detail::Exact).
 ///
 /// Each function takes the pair in registry order (circle < aabb < obb < capsule < polygon).
 
@@ -304,9 +305,11 @@ inline bool dilated_cores_meet(const Core& p, const Core& q, const Radii& r) noe
     }
     return false;
   };
-  // A single point's own edge is itself: the other direction adds nothing.
-  if (vertices_near_edges(p, q)) return true;
-  return p.size() > 1 && q.size() > 1 && vertices_near_edges(q, p);
+  // A point's only edge is itself, and a point's distance to the other core's edges covers the
+  // other direction; a point against a point is either way round.
+  if (p.size() == 1) return vertices_near_edges(p, q);
+  if (q.size() == 1) return vertices_near_edges(q, p);
+  return vertices_near_edges(p, q) || vertices_near_edges(q, p);
 }
 
 /// sign of dx^2 + dy^2 - r^2 when a static bound proves it, else 2. dx, dy and r each carry at
