@@ -75,6 +75,27 @@ TYPED_TEST(TinyPolygons, SubnormalPolygonsAreValidAndExact) {
   EXPECT_TRUE(overlaps(a, Aabb<T>(V(2 * d, 2 * d), V(8 * d, 8 * d))));   // on the edge x + y = 4d
 }
 
+// Coordinates 2^263 and subnormal in one orientation test: the scaled expansion would lose the
+// products of the smallest coordinates, so these are evaluated in exact binary arithmetic. The
+// pair is apart (the exact oracle's answer on a fuzz corpus input).
+TEST(Orient, CoordinatesSpreadBeyondTheExpansionRangeAreExact) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> a{V(-0x1.050505050505p+262, 0x0.0001p-1022), V(-0x1.a828p+227, 0x0.000000000505p-1022),
+                                V(0, 0x0.0008d0401505p-1022), V(-0x1.41414p+240, 0x1.050505050505p+262),
+                                V(-0x1.050505050505p+262, 0x1.0bfdap+257)};
+  const ConvexPolygon<double> b{V(0, 0), V(0x1.050505050505p-1018, 0), V(0x1.050505050505p+263, 0x1.0003f5050505p+257),
+                                V(0x1.050505050505p+263, 0x1.050505050505p+262),
+                                V(0x1.050505050505p-1018, 0x1.0003feep+257)};
+  EXPECT_FALSE(overlaps(a, b));
+  EXPECT_FALSE(overlaps(b, a));
+  // Magnitudes 2^501 and 2^-1074 in one call: collinear (0), one unit off (+1), and a determinant
+  // of exactly -t^2 = -2^-2148, which no double holds.
+  const double t = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(orient(Vec2c(0, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 2 * t)), 0);
+  EXPECT_EQ(orient(Vec2c(0, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 3 * t)), 1);
+  EXPECT_EQ(orient(Vec2c(t, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 2 * t)), -1);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The exact number type and the filter behind every decision.
 

@@ -115,9 +115,57 @@ int sign_line_dist2_minus(const P& p, const Vec2c& a, const Vec2c& b, const Radi
   });
 }
 
+/// sign of dx^2 + dy^2 - r^2 when a static bound proves it, else 2. dx, dy and r each carry at
+/// most one rounding of the exact values; the computed difference is then within
+/// 5.02 u (dx^2 + dy^2 + r^2) of the exact one (u = 2^-53), below the 8 u used. Sums below
+/// 2^-960 are left undecided: an underflowing square breaks the relative bound.
+inline int filtered_sign_dist2(Calc dx, Calc dy, Calc r) noexcept {
+  const Calc l = dx * dx + dy * dy, q = r * r;
+  const Calc m = l + q, d = l - q;
+  if (m > 0x1p-960) [[likely]] {
+    const Calc bound = 0x1p-50 * m;
+    if (d > bound) return 1;
+    if (-d > bound) return -1;
+  }
+  return 2;
+}
+
+/// sign of dist(p, [a, b])^2 - r^2 for a stored point, by static bounds; 2 when unsure. r carries
+/// at most one rounding. With w = p - a, e = b - a: t = w . e and |e|^2 are within 4.01 u of
+/// mt = |w_x e_x| + |w_y e_y| + |e|^2 (8 u used), which tells the nearest feature; inside the
+/// slab, c = cross(e, w) is within 4.01 u mc (mc = |e_x w_y| + |e_y w_x|), so c^2 - r^2 |e|^2 is
+/// within 10.1 u (mc^2 + r^2 |e|^2) (16 u used). Sums below 2^-900, or an r^2 that is not normal
+/// (it is multiplied by |e|^2), are left undecided.
+inline int filtered_point_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b, Calc r) noexcept {
+  const Calc wx = p.x() - a.x(), wy = p.y() - a.y();
+  if (a == b) return filtered_sign_dist2(wx, wy, r);
+  const Calc ex = b.x() - a.x(), ey = b.y() - a.y();
+  const Calc t = wx * ex + wy * ey, ee = ex * ex + ey * ey;
+  const Calc mt = std::fabs(wx * ex) + std::fabs(wy * ey) + ee;
+  if (!(mt > 0x1p-900)) return 2;
+  const Calc tb = 8 * 0x1p-53 * mt;
+  if (t < -tb) return filtered_sign_dist2(wx, wy, r);                          // nearest: a
+  if (t - ee > tb) return filtered_sign_dist2(p.x() - b.x(), p.y() - b.y(), r);  // nearest: b
+  if (t > tb && ee - t > tb && (r == 0 || r * r > 0x1p-1000)) {
+    const Calc c = ex * wy - ey * wx;
+    const Calc mc = std::fabs(ex * wy) + std::fabs(ey * wx);
+    const Calc rr = r * r * ee;
+    const Calc m = mc * mc + rr;
+    if (m > 0x1p-900) {
+      const Calc q = c * c - rr, qb = 16 * 0x1p-53 * m;
+      if (q > qb) return 1;
+      if (-q > qb) return -1;
+    }
+  }
+  return 2;
+}
+
 /// The closed disc of radius r around p meets the segment [a, b] (a == b allowed).
 template <class P>
 bool point_segment_within(const P& p, const Vec2c& a, const Vec2c& b, const Radii& r) noexcept {
+  if constexpr (std::is_same_v<P, Vec2c>) {
+    if (const int s = filtered_point_segment(p, a, b, r.a + r.b); s != 2) [[likely]] return s <= 0;
+  }
   if (sign_dist2_minus(p, a, r) <= 0) return true;
   if (a == b) return false;
   if (sign_dist2_minus(p, b, r) <= 0) return true;
@@ -312,20 +360,6 @@ inline bool dilated_cores_meet(const Core& p, const Core& q, const Radii& r) noe
   return vertices_near_edges(p, q) || vertices_near_edges(q, p);
 }
 
-/// sign of dx^2 + dy^2 - r^2 when a static bound proves it, else 2. dx, dy and r each carry at
-/// most one rounding of the exact values; the computed difference is then within
-/// 5.02 u (dx^2 + dy^2 + r^2) of the exact one (u = 2^-53), below the 8 u used. Sums below
-/// 2^-960 are left undecided: an underflowing square breaks the relative bound.
-inline int filtered_sign_dist2(Calc dx, Calc dy, Calc r) noexcept {
-  const Calc l = dx * dx + dy * dy, q = r * r;
-  const Calc m = l + q, d = l - q;
-  if (m > 0x1p-960) [[likely]] {
-    const Calc bound = 0x1p-50 * m;
-    if (d > bound) return 1;
-    if (-d > bound) return -1;
-  }
-  return 2;
-}
 
 }  // namespace detail
 

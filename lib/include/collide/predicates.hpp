@@ -1,8 +1,7 @@
 #pragma once
 /// @file predicates.hpp
-/// Sign predicates. orient() is exact for every input the shapes accept (see its caveat on
-/// coordinates more than 2^995 apart in magnitude); everything built only on it and on comparisons
-/// (AABB and polygon decisions) is exact.
+/// Sign predicates: orient(), exact for every input the shapes accept, and the machinery of the
+/// exact decisions (a filter with a running error bound, exact binary arithmetic).
 
 #include "collide/config.hpp"
 
@@ -52,55 +51,6 @@ int exact_sign_of_sum(const double (&terms)[N]) noexcept {
 }
 
 }  // namespace detail
-
-namespace detail {
-
-/// Exact sign of the orientation determinant by expansion arithmetic. Products and their fma
-/// error terms are exact when no product underflows; callers scale the inputs so that this holds.
-inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
-  // det = bx*cy - bx*ay - ax*cy - by*cx + by*ax + ay*cx, each product split exactly in two.
-  const Term p[6] = {
-      two_product(b.x(), c.y()),  two_product(-b.x(), a.y()), two_product(-a.x(), c.y()),
-      two_product(-b.y(), c.x()), two_product(b.y(), a.x()),  two_product(a.y(), c.x()),
-  };
-  const double terms[12] = {p[0].hi, p[0].lo, p[1].hi, p[1].lo, p[2].hi, p[2].lo,
-                            p[3].hi, p[3].lo, p[4].hi, p[4].lo, p[5].hi, p[5].lo};
-  return exact_sign_of_sum(terms);
-}
-
-}  // namespace detail
-
-/// Sign of the turn a -> b -> c: +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear.
-///
-/// A floating-point filter answers most calls (bound (3 + 16u)u * (|l| + |r|), Shewchuk); the rest
-/// expand the determinant into six exact products and sum them exactly.
-///
-/// Exact for every input the shapes accept (finite, |v| <= 2^500, subnormals included) provided
-/// every non-zero coordinate is at least 2^-995 times the largest one of the call. The fallback
-/// first scales all six coordinates by one power of two (exact, sign-preserving) so that the
-/// largest is near 2^510: no product can then overflow, and no product of coordinates within
-/// that ratio can underflow. The filter is skipped when its products are tiny, since underflow
-/// breaks its relative error bound.
-inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
-  const double l = (b.x() - a.x()) * (c.y() - a.y());
-  const double r = (b.y() - a.y()) * (c.x() - a.x());
-  const double det = l - r;
-  const double mag = std::fabs(l) + std::fabs(r);
-  if (mag > 0x1p-900) {
-    const double bound = 3.3306690738754716e-16 * mag;
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-  }
-  const double m = std::max({std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()),
-                             std::fabs(c.x()), std::fabs(c.y())});
-  if (m == 0.0) return 0;
-  int e = 0;
-  static_cast<void>(std::frexp(m, &e));  // m in [2^(e-1), 2^e)
-  const int k = 510 - e;
-  if (k == 0) return detail::orient_expansion(a, b, c);
-  auto s = [k](const Vec2c& v) { return Vec2c(std::ldexp(v.x(), k), std::ldexp(v.y(), k)); };
-  return detail::orient_expansion(s(a), s(b), s(c));
-}
 
 namespace detail {
 
@@ -293,6 +243,68 @@ int exact_sign(F&& f) noexcept {
 }
 
 }  // namespace detail
+
+namespace detail {
+
+/// Exact sign of the orientation determinant by expansion arithmetic. Products and their fma
+/// error terms are exact when no product underflows; callers scale the inputs so that this holds.
+inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
+  // det = bx*cy - bx*ay - ax*cy - by*cx + by*ax + ay*cx, each product split exactly in two.
+  const Term p[6] = {
+      two_product(b.x(), c.y()),  two_product(-b.x(), a.y()), two_product(-a.x(), c.y()),
+      two_product(-b.y(), c.x()), two_product(b.y(), a.x()),  two_product(a.y(), c.x()),
+  };
+  const double terms[12] = {p[0].hi, p[0].lo, p[1].hi, p[1].lo, p[2].hi, p[2].lo,
+                            p[3].hi, p[3].lo, p[4].hi, p[4].lo, p[5].hi, p[5].lo};
+  return exact_sign_of_sum(terms);
+}
+
+}  // namespace detail
+
+/// Sign of the turn a -> b -> c: +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear.
+///
+/// A floating-point filter answers most calls (bound (3 + 16u)u * (|l| + |r|), Shewchuk); the rest
+/// expand the determinant into six exact products and sum them exactly.
+///
+/// Exact for every input the shapes accept (finite, |v| <= 2^500, subnormals included). When
+/// every non-zero coordinate is at least 2^-995 times the largest one of the call, the fallback
+/// first scales all six coordinates by one power of two (exact, sign-preserving) so that the
+/// largest is near 2^510: no product can then overflow, and no product of coordinates within
+/// that ratio can underflow. Wider spreads are evaluated with detail::Exact. The filter is
+/// skipped when its products are tiny, since underflow breaks its relative error bound.
+inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
+  const double l = (b.x() - a.x()) * (c.y() - a.y());
+  const double r = (b.y() - a.y()) * (c.x() - a.x());
+  const double det = l - r;
+  const double mag = std::fabs(l) + std::fabs(r);
+  if (mag > 0x1p-900) {
+    const double bound = 3.3306690738754716e-16 * mag;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  const double m = std::max({std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()),
+                             std::fabs(c.x()), std::fabs(c.y())});
+  if (m == 0.0) return 0;
+  ++detail::exact_evaluations;
+  // The expansion needs every non-zero coordinate within 2^-995 of the largest (products after
+  // scaling stay normal); wider spreads are evaluated in exact binary arithmetic.
+  double lo = m;
+  for (const double v : {a.x(), a.y(), b.x(), b.y(), c.x(), c.y()}) {
+    if (v != 0.0) lo = std::min(lo, std::fabs(v));
+  }
+  if (lo < 0x1p-995 * m) {
+    using detail::Exact;
+    const Exact ax(a.x()), ay(a.y());
+    return ((Exact(b.x()) - ax) * (Exact(c.y()) - ay) - (Exact(b.y()) - ay) * (Exact(c.x()) - ax)).sign();
+  }
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));  // m in [2^(e-1), 2^e)
+  const int k = 510 - e;
+  if (k == 0) return detail::orient_expansion(a, b, c);
+  auto s = [k](const Vec2c& v) { return Vec2c(std::ldexp(v.x(), k), std::ldexp(v.y(), k)); };
+  return detail::orient_expansion(s(a), s(b), s(c));
+}
+
 
 /// 2D cross product (z component), computed in Calc.
 inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept { return a.x() * b.y() - a.y() * b.x(); }
