@@ -257,6 +257,7 @@ std::optional<std::pair<double, double>> flip(F&& f, double hi) {
 
 struct Tally {
   std::uint64_t cases = 0, disagreements = 0, overlap_cases = 0, contains_cases = 0, skipped = 0;
+  std::uint64_t exact_calls = 0;  // judged calls that needed an exact evaluation
   std::map<std::string, std::uint64_t> per_label, bad_label;
   int printed = 0;
   std::string save_dir;
@@ -312,7 +313,9 @@ std::string text(const Shape<T>& s) {
 
 template <Scalar T>
 void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Shape<T>& b) {
+  const std::uint64_t before = detail::exact_evaluations;
   const bool got = overlaps(a, b);
+  t.exact_calls += detail::exact_evaluations != before;
   const bool exact = oracle::overlaps(a, b);
   ++t.cases;
   ++t.overlap_cases;
@@ -332,7 +335,9 @@ void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Sha
 
 template <Scalar T>
 void judge_point(Tally& t, const std::string& label, const Shape<T>& s, const Vec2<T>& p) {
+  const std::uint64_t before = detail::exact_evaluations;
   const bool got = contains(s, p);
+  t.exact_calls += detail::exact_evaluations != before;
   const bool exact = oracle::contains(s, p);
   ++t.cases;
   ++t.contains_cases;
@@ -498,6 +503,8 @@ int main(int argc, char** argv) {
               "%llu disagreements, %.1f s, seed %llu\n",
               (unsigned long long)t.cases, (unsigned long long)t.overlap_cases, (unsigned long long)t.contains_cases,
               (unsigned long long)t.skipped, (unsigned long long)t.disagreements, secs, (unsigned long long)seed);
+  std::printf("filter decided %.1f %% of these calls without an exact evaluation\n",
+              100.0 * double(t.cases - t.exact_calls) / double(t.cases));
   for (const auto& [label, n] : t.per_label) {
     const auto bad = t.bad_label.count(label) ? t.bad_label.at(label) : 0;
     std::printf("  %-28s %9llu%s\n", label.c_str(), (unsigned long long)n,
