@@ -30,17 +30,15 @@ struct ObbCorner {
   Calc shx, thy;  ///< s hx and t hy (exact: a sign change)
 };
 
-/// The coordinates of a point in number type N.
+/// p - a in number type N.
 template <class N>
-void coords_of(const Vec2c& p, N& x, N& y) noexcept {
-  x = N(p.x());
-  y = N(p.y());
+std::array<N, 2> offset(const Vec2c& p, const Vec2c& a) noexcept {
+  return {N(p.x()) - N(a.x()), N(p.y()) - N(a.y())};
 }
 template <class N>
-void coords_of(const ObbCorner& p, N& x, N& y) noexcept {
+std::array<N, 2> offset(const ObbCorner& p, const Vec2c& a) noexcept {
   const N sx(p.shx), ty(p.thy), ux(p.u.x()), uy(p.u.y());
-  x = N(p.c.x()) + sx * ux - ty * uy;
-  y = N(p.c.y()) + sx * uy + ty * ux;
+  return {N(p.c.x()) + sx * ux - ty * uy - N(a.x()), N(p.c.y()) + sx * uy + ty * ux - N(a.y())};
 }
 
 /// An OBB's stored values, in the computation type.
@@ -73,9 +71,8 @@ template <class P>
 int sign_dist2_minus(const P& p, const Vec2c& a, const Radii& r) noexcept {
   return exact_sign([&](auto tag) {
     using N = decltype(tag);
-    N x, y;
-    coords_of(p, x, y);
-    const N dx = x - N(a.x()), dy = y - N(a.y()), rr = r.template value<N>();
+    const auto [dx, dy] = offset<N>(p, a);
+    const N rr = r.template value<N>();
     return dx * dx + dy * dy - rr * rr;
   });
 }
@@ -85,9 +82,9 @@ template <class P>
 int sign_dot(const P& p, const Vec2c& a, const Vec2c& b) noexcept {
   return exact_sign([&](auto tag) {
     using N = decltype(tag);
-    N x, y;
-    coords_of(p, x, y);
-    return (x - N(a.x())) * (N(b.x()) - N(a.x())) + (y - N(a.y())) * (N(b.y()) - N(a.y()));
+    const auto [wx, wy] = offset<N>(p, a);
+    const auto [ex, ey] = offset<N>(b, a);
+    return wx * ex + wy * ey;
   });
 }
 
@@ -96,9 +93,9 @@ template <class P>
 int sign_turn(const Vec2c& a, const Vec2c& b, const P& p) noexcept {
   return exact_sign([&](auto tag) {
     using N = decltype(tag);
-    N x, y;
-    coords_of(p, x, y);
-    return (N(b.x()) - N(a.x())) * (y - N(a.y())) - (N(b.y()) - N(a.y())) * (x - N(a.x()));
+    const auto [wx, wy] = offset<N>(p, a);
+    const auto [ex, ey] = offset<N>(b, a);
+    return ex * wy - ey * wx;
   });
 }
 
@@ -107,10 +104,10 @@ template <class P>
 int sign_line_dist2_minus(const P& p, const Vec2c& a, const Vec2c& b, const Radii& r) noexcept {
   return exact_sign([&](auto tag) {
     using N = decltype(tag);
-    N x, y;
-    coords_of(p, x, y);
-    const N ex = N(b.x()) - N(a.x()), ey = N(b.y()) - N(a.y()), rr = r.template value<N>();
-    const N c = ex * (y - N(a.y())) - ey * (x - N(a.x()));
+    const auto [wx, wy] = offset<N>(p, a);
+    const auto [ex, ey] = offset<N>(b, a);
+    const N rr = r.template value<N>();
+    const N c = ex * wy - ey * wx;
     return c * c - rr * rr * (ex * ex + ey * ey);
   });
 }
@@ -180,10 +177,8 @@ template <class P>
 int sign_face_excess(const P& p, const ObbValues& o, int axis, int sigma) noexcept {
   return exact_sign([&](auto tag) {
     using N = decltype(tag);
-    N x, y;
-    coords_of(p, x, y);
+    const auto [dx, dy] = offset<N>(p, o.c);
     const N ux(o.u.x()), uy(o.u.y()), h(axis == 0 ? o.hx : o.hy);
-    const N dx = x - N(o.c.x()), dy = y - N(o.c.y());
     const N along = axis == 0 ? dx * ux + dy * uy : dy * ux - dx * uy;
     return (sigma > 0 ? along : -along) - h * (ux * ux + uy * uy);
   });
@@ -207,24 +202,14 @@ bool obb_face_separates(const ObbValues& o, std::span<const P> pts) noexcept {
   return false;
 }
 
+/// The turn a -> b -> p for an OBB corner (found by has_separating_edge through its argument).
+inline int turn_of(const Vec2c& a, const Vec2c& b, const ObbCorner& p) noexcept { return sign_turn(a, b, p); }
+
 /// Some edge of a core (a segment counts both ways) has every corner of the OBB strictly outside.
 inline bool core_edge_separates_obb(const Core& k, const ObbValues& o) noexcept {
-  const std::size_t n = k.size();
-  if (n < 2) return false;
+  if (k.size() < 2) return false;
   const std::array<ObbCorner, 4> q = o.corners();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2c& a = k[i];
-    const Vec2c& b = k[(i + 1) % n];
-    bool all_out = true;
-    for (const ObbCorner& p : q) {
-      if (sign_turn(a, b, p) >= 0) {
-        all_out = false;
-        break;
-      }
-    }
-    if (all_out) return true;
-  }
-  return false;
+  return has_separating_edge(k.pts(), std::span<const ObbCorner>(q));
 }
 
 /// The OBB and a core (point, segment or convex polygon of stored points) share a point: no
@@ -314,7 +299,7 @@ inline bool point_obb_within(const Vec2c& p, const ObbValues& o, const Radii& r)
            using N = decltype(tag);
            const N ux(o.u.x()), uy(o.u.y()), rr = r.template value<N>();
            const N uu = ux * ux + uy * uy;
-           const N dx = N(p.x()) - N(o.c.x()), dy = N(p.y()) - N(o.c.y());
+           const auto [dx, dy] = offset<N>(p, o.c);
            N sum = -(rr * rr * uu);
            for (int axis = 0; axis < 2; ++axis) {
              if (side[axis] == 0) continue;
