@@ -17,10 +17,12 @@ namespace bench {
 using collide::Vec2;
 using V = Vec2<float>;
 
-/// The two placements of a pair: anywhere in a 100 x 100 world, or near each other (about half
-/// of them overlapping).
-enum class Placement { Random, Near };
-inline const char* name(Placement p) { return p == Placement::Random ? "random" : "near"; }
+/// The placements of a pair: anywhere in a 100 x 100 world, near each other (about half of them
+/// overlapping), or exactly touching (every decision needs the exact path).
+enum class Placement { Random, Near, Touching };
+inline const char* name(Placement p) {
+  return p == Placement::Random ? "random" : (p == Placement::Near ? "near" : "touching");
+}
 
 /// One shape in both libraries' forms. Box2D shapes are in world coordinates with the identity
 /// transform; polygon skins are 0 (m_radius = 0) so both answer for the same sharp shape.
@@ -53,8 +55,8 @@ class Maker {
   float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng_); }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
 
-  CircleIn circle(const V& at) {
-    const float r = uniform(0.5f, 2.0f);
+  CircleIn circle(const V& at) { return circle_at(at, uniform(0.5f, 2.0f)); }
+  static CircleIn circle_at(const V& at, float r) {
     CircleIn s{collide::Circle<float>(at, r), {}};
     s.b.m_p = to_b2(at);
     s.b.m_radius = r;
@@ -116,6 +118,33 @@ class Maker {
       s.b.m_centroid = (1.0f / float(vs.size())) * centroid;
       s.b.m_radius = 0;
       return s;
+    }
+  }
+
+  /// Exactly touching circles: centres (3, 4) k apart, radii summing to 5 k (k a multiple of 1/8,
+  /// so every value is exact in float).
+  void touching_circles(std::size_t n, std::vector<CircleIn>& as, std::vector<CircleIn>& bs) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const float k = float(integer(1, 16)) / 8, x = float(integer(0, 800)) / 8, y = float(integer(0, 800)) / 8;
+      const float ra = k * float(integer(1, 4));
+      as.push_back(circle_at(V(x, y), ra));
+      bs.push_back(circle_at(V(x + 3 * k, y + 4 * k), 5 * k - ra));
+    }
+  }
+  /// Unturned boxes sharing part of a face exactly (every value a multiple of 1/8).
+  void touching_boxes(std::size_t n, std::vector<ObbIn>& as, std::vector<ObbIn>& bs) {
+    auto box = [](const V& at, const V& h) {
+      ObbIn s{collide::Obb<float>(at, h, 0.0f), {}};
+      s.b.SetAsBox(h.x(), h.y(), to_b2(at), 0.0f);
+      s.b.m_radius = 0;
+      return s;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const V ha(float(integer(4, 16)) / 8, float(integer(4, 16)) / 8);
+      const V hb(float(integer(4, 16)) / 8, float(integer(4, 16)) / 8);
+      const V pa(float(integer(0, 800)) / 8, float(integer(0, 800)) / 8);
+      as.push_back(box(pa, ha));
+      bs.push_back(box(pa + V(ha.x() + hb.x(), float(integer(-4, 4)) / 8), hb));
     }
   }
 

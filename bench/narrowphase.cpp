@@ -6,6 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -125,11 +126,15 @@ struct Set {
 template <class A, class B>
 bool cross_check(Set<A, B>& s) {
   constexpr double band = 1e-3, depth_tol = 2e-3;
-  long hits = 0, bad = 0, boundary = 0, depth_bad = 0, b2_manifold_checked = 0;
+  long hits = 0, bad = 0, boundary = 0, depth_bad = 0, b2_manifold_checked = 0, exact_calls = 0;
+  std::uint64_t exact_signs = 0;
   for (std::size_t i = 0; i < s.a.size(); ++i) {
     const A& a = s.a[i];
     const B& b = s.b[i];
+    const std::uint64_t before = collide::detail::exact_evaluations;
     const bool c = collide::overlaps(a.c, b.c);
+    exact_signs += collide::detail::exact_evaluations - before;
+    exact_calls += collide::detail::exact_evaluations != before;
     const auto ct = collide::contact(a.c, b.c);
     if (ct.has_value() != c) ++bad;
     hits += c;
@@ -162,9 +167,11 @@ bool cross_check(Set<A, B>& s) {
     }
   }
   s.overlap_rate = double(hits) / double(s.a.size());
-  std::printf("check %-16s %-6s overlap %5.1f%%  boundary-band disagreements %ld  contacts compared %ld  %s\n",
-              s.pair.c_str(), name(s.placement), 100 * s.overlap_rate, boundary, b2_manifold_checked,
-              bad == 0 && depth_bad == 0 ? "OK" : "MISMATCH");
+  std::printf("check %-16s %-8s overlap %5.1f%%  filter decided %6.2f%% (exact signs %llu)  "
+              "boundary-band disagreements %ld  contacts compared %ld  %s\n",
+              s.pair.c_str(), name(s.placement), 100 * s.overlap_rate,
+              100.0 * double(long(s.a.size()) - exact_calls) / double(s.a.size()), (unsigned long long)exact_signs,
+              boundary, b2_manifold_checked, bad == 0 && depth_bad == 0 ? "OK" : "MISMATCH");
   return bad == 0 && depth_bad == 0;
 }
 
@@ -225,6 +232,27 @@ bool add_pair(collide::ShapeKind ka, collide::ShapeKind kb, float near_scale, MA
   return ok;
 }
 
+/// Exactly touching pairs: every decision takes the exact path, so these time its cost.
+template <class A, class F>
+bool add_touching(collide::ShapeKind k, F fill, unsigned seed) {
+  auto s = std::make_shared<Set<A, A>>();
+  s->pair = collide::name(collide::make_pair(k, k));
+  s->placement = Placement::Touching;
+  Maker maker(seed);
+  (maker.*fill)(kPairs, s->a, s->b);
+  const bool ok = cross_check(*s) && s->overlap_rate == 1.0;
+  const std::string tail = s->pair + "/" + name(s->placement);
+  benchmark::RegisterBenchmark(("overlap/" + tail + "/collide").c_str(), [s](benchmark::State& st) {
+    run_pairs(st, *s, [](const A& a, const A& b) { return int(collide::overlaps(a.c, b.c)); });
+  });
+  if constexpr (naive_exists<A, A>()) {
+    benchmark::RegisterBenchmark(("overlap/" + tail + "/naive").c_str(), [s](benchmark::State& st) {
+      run_pairs(st, *s, [](const A& a, const A& b) { return int(naive(a, b)); });
+    });
+  }
+  return ok;
+}
+
 }  // namespace
 
 bool register_narrowphase() {
@@ -236,6 +264,8 @@ bool register_narrowphase() {
   ok = add_pair<CircleIn, ObbIn>(K::Circle, K::Obb, 1.8f, &Maker::circle, &Maker::obb, 4) && ok;
   ok = add_pair<CapsuleIn, CapsuleIn>(K::Capsule, K::Capsule, 1.4f, &Maker::capsule, &Maker::capsule, 5) && ok;
   ok = add_pair<HullIn, HullIn>(K::Polygon, K::Polygon, 1.3f, &Maker::hull, &Maker::hull, 6) && ok;
+  ok = add_touching<CircleIn>(K::Circle, &Maker::touching_circles, 7) && ok;
+  ok = add_touching<ObbIn>(K::Obb, &Maker::touching_boxes, 8) && ok;
   return ok;
 }
 

@@ -1,5 +1,5 @@
-// contains() on hand-computed cases: exact (to the last ulp) for AABBs and polygons, within
-// contains_tolerance() for round shapes and OBBs; NaN/inf points; tiny and huge shapes.
+// contains() on hand-computed cases: exact to the last ulp for every kind (contains_tolerance()
+// is 0); NaN/inf points; tiny and huge shapes.
 
 #include "support.hpp"
 
@@ -72,8 +72,33 @@ TYPED_TEST(Contains, RoundShapesAndObb) {
   EXPECT_TRUE(contains(diamond, V(T(1.40625), 0)));
   EXPECT_FALSE(contains(diamond, V(T(1.421875), 0)));
   EXPECT_FALSE(contains(diamond, V(1, 1)));  // corner of the unturned square: outside
-  // Error bound: a few ulps of the scale, far below the 2^-18 steps used above.
-  EXPECT_LT(contains_tolerance(c, V(3, 4)), 1e-12);
+  EXPECT_EQ(contains_tolerance(c, V(3, 4)), 0.0);
+}
+
+TYPED_TEST(Contains, RoundShapesAndObbAreExactToTheUlp) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  for (const T s : {T(1), T(0x1p-60), T(0x1p60), T(0x1p-100), T(0x1p100)}) {
+    SCOPED_TRACE(double(s));
+    // On the circle (3-4-5), then one ulp out and in.
+    const Circle<T> c(V(0, 0), 5 * s);
+    EXPECT_TRUE(contains(c, V(3 * s, 4 * s)));
+    EXPECT_FALSE(contains(c, V(3 * s, up(4 * s))));
+    EXPECT_TRUE(contains(c, V(3 * s, down(4 * s))));
+    // On a capsule's end disk, at an offset.
+    const T o = T(0x1p20) * s;  // an offset of about 1e6 sizes; o + 7 s stays exact in float
+    const Capsule<T> cap(V(o, o), V(o + 4 * s, o), 5 * s);
+    EXPECT_TRUE(contains(cap, V(o + 7 * s, o + 4 * s)));
+    EXPECT_FALSE(contains(cap, V(up(o + 7 * s), o + 4 * s)));
+    EXPECT_TRUE(contains(cap, V(o + 7 * s, down(o + 4 * s))));
+    // A turned box: its face midpoint c + h u is exact (h a power of two times s).
+    const Obb<T> obb(V(0, 0), V(4 * s, 2 * s), T(0.3));
+    const V u = obb.axis();
+    const V mid = u * (4 * s);
+    EXPECT_TRUE(contains(obb, mid));
+    EXPECT_FALSE(contains(obb, V(up(mid.x()), mid.y())));  // u.x > 0: one ulp outward
+    EXPECT_TRUE(contains(obb, V(down(mid.x()), mid.y())));
+  }
 }
 
 TYPED_TEST(Contains, CompoundIsTheUnion) {

@@ -1,5 +1,5 @@
 // Every pair of the registry, both argument orders, both scalars, at several scales: separated,
-// exactly touching, just separated / just overlapping (by far more than the error bound),
+// exactly touching, just separated / just overlapping (by 2^-18 of the size; exact decisions),
 // overlapping, one containing the other, coincident. Then contact, resolve and distance on the
 // same configurations. The pairs come from for_each_pair and the shapes from make_kind, so a new
 // kind or pair is covered without editing this file.
@@ -37,14 +37,12 @@ void check_config(T ha, T hb, T x, T gap, bool contained) {
   EXPECT_EQ(ab, ba);
   // Variant dispatch must land on the same decision as the concrete call.
   EXPECT_EQ(ab, overlaps(Shape<T>(a), Shape<T>(b)));
-  const Calc tol = overlap_tolerance(a, b);
-  const bool exact = exact_kind(KA) && exact_kind(KB);
+  // Every pair is decided exactly: the answer is the exact one, touching included.
+  EXPECT_EQ(overlap_tolerance(a, b), 0.0);
   const bool expected = contained || !(gap > 0);
-  if (exact || std::fabs(Calc(gap)) > tol || contained) {
-    // Outside the error band the answer must be the exact one (inside it only exact pairs are
-    // held to it). A failure here is a rounding error larger than overlap_tolerance promises.
-    EXPECT_EQ(ab, expected) << "gap " << gap << " tol " << tol;
-  }
+  EXPECT_EQ(ab, expected) << "gap " << gap;
+  // Depths and distances are rounded outputs, bounded by rounding_tolerance.
+  const Calc tol = rounding_tolerance(a, b);
   // contact() exists exactly when overlaps() is true (same decision underneath).
   EXPECT_EQ(contact(a, b).has_value(), ab);
   EXPECT_EQ(contact(b, a).has_value(), ab);
@@ -81,7 +79,7 @@ void check_config(T ha, T hb, T x, T gap, bool contained) {
 template <ShapeKind KA, ShapeKind KB, Scalar T>
 void check_pair_at(T s) {
   const T ha = s, hb = s / 2;
-  const T near = s * T(0x1p-18);  // far above 64 * 2^-53 * S, far below the shapes' size
+  const T near = s * T(0x1p-18);  // far below the shapes' size
   SCOPED_TRACE((pair_label<KA, KB>() + " scale " + std::to_string(double(s))));
   {
     SCOPED_TRACE("separated");
@@ -98,6 +96,16 @@ void check_pair_at(T s) {
   {
     SCOPED_TRACE("just overlapping");
     check_config<KA, KB, T>(ha, hb, ha + hb - near, -near, false);
+  }
+  {
+    SCOPED_TRACE("one ulp apart");
+    const T x = std::nextafter(ha + hb, std::numeric_limits<T>::infinity());
+    check_config<KA, KB, T>(ha, hb, x, x - (ha + hb), false);
+  }
+  {
+    SCOPED_TRACE("one ulp overlapping");
+    const T x = std::nextafter(ha + hb, T(0));
+    check_config<KA, KB, T>(ha, hb, x, x - (ha + hb), false);
   }
   {
     SCOPED_TRACE("overlapping");
@@ -150,6 +158,17 @@ int register_pairs(const char* suite) {
 
 const int kRegisteredFloat = register_pairs<float>("PairsFloat");
 const int kRegisteredDouble = register_pairs<double>("PairsDouble");
+
+// A zero-length capsule (a point core) against a segment capsule: the point's distance to the
+// segment decides, not only the distances between endpoints.
+TEST(Pairs, PointCapsuleMeetsSegmentCapsuleBySegmentDistance) {
+  using V = Vec2<double>;
+  const Capsule<double> seg(V(-10, 0), V(10, 0), 1);
+  const Capsule<double> dot(V(0, 3), V(0, 3), 2);  // 3 above the segment's middle, radii 1 + 2
+  EXPECT_TRUE(overlaps(seg, dot));
+  EXPECT_TRUE(overlaps(dot, seg));
+  EXPECT_FALSE(overlaps(seg, Capsule<double>(V(0, std::nextafter(3.0, 4.0)), V(0, std::nextafter(3.0, 4.0)), 2)));
+}
 
 // The registration covered the whole registry (a for_each_pair that skipped pairs would show).
 TEST(Pairs, EveryRegistryPairIsRegistered) {

@@ -75,5 +75,91 @@ TYPED_TEST(TinyPolygons, SubnormalPolygonsAreValidAndExact) {
   EXPECT_TRUE(overlaps(a, Aabb<T>(V(2 * d, 2 * d), V(8 * d, 8 * d))));   // on the edge x + y = 4d
 }
 
+// Coordinates 2^263 and subnormal in one orientation test: the scaled expansion would lose the
+// products of the smallest coordinates, so these are evaluated in exact binary arithmetic. The
+// pair is apart (the exact oracle's answer on a fuzz corpus input).
+TEST(Orient, CoordinatesSpreadBeyondTheExpansionRangeAreExact) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> a{V(-0x1.050505050505p+262, 0x0.0001p-1022), V(-0x1.a828p+227, 0x0.000000000505p-1022),
+                                V(0, 0x0.0008d0401505p-1022), V(-0x1.41414p+240, 0x1.050505050505p+262),
+                                V(-0x1.050505050505p+262, 0x1.0bfdap+257)};
+  const ConvexPolygon<double> b{V(0, 0), V(0x1.050505050505p-1018, 0), V(0x1.050505050505p+263, 0x1.0003f5050505p+257),
+                                V(0x1.050505050505p+263, 0x1.050505050505p+262),
+                                V(0x1.050505050505p-1018, 0x1.0003feep+257)};
+  EXPECT_FALSE(overlaps(a, b));
+  EXPECT_FALSE(overlaps(b, a));
+  // Magnitudes 2^501 and 2^-1074 in one call: collinear (0), one unit off (+1), and a determinant
+  // of exactly -t^2 = -2^-2148, which no double holds.
+  const double t = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(orient(Vec2c(0, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 2 * t)), 0);
+  EXPECT_EQ(orient(Vec2c(0, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 3 * t)), 1);
+  EXPECT_EQ(orient(Vec2c(t, 0), Vec2c(0x1p500, t), Vec2c(0x1p501, 2 * t)), -1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The exact number type and the filter behind every decision.
+
+using detail::Bounded;
+using detail::Exact;
+
+/// (a + b)^2 - a^2 - 2ab - b^2 + e in number type N.
+template <class N>
+N expanded_square(double a, double b, double e) {
+  const N x(a), y(b);
+  return (x + y) * (x + y) - x * x - N(2.0) * x * y - y * y + N(e);
+}
+
+TEST(Exact, SumsKeepEveryBit) {
+  // 2^500 + 2^-1074 - 2^500 is the smallest subnormal, not 0.
+  const Exact big(0x1p500), tiny(std::numeric_limits<double>::denorm_min());
+  EXPECT_EQ((big + tiny - big).sign(), 1);
+  EXPECT_EQ((big - tiny - big).sign(), -1);
+  EXPECT_EQ((big - big).sign(), 0);
+  EXPECT_EQ((tiny - big).sign(), -1);
+  EXPECT_EQ((-(tiny - big)).sign(), 1);
+}
+
+TEST(Exact, PolynomialIdentitiesAcrossTheRange) {
+  // Degree-2 identities with terms 2^-1074 .. 2^501 apart: exact zero, and the sign of a
+  // perturbation far below every term's rounding.
+  const double values[] = {1.0, 0.1, -3.75e-200, 2.5e150, 0x1p500, -0x1p-1074, 0x1.fffffffffffffp-1022, 1e-300};
+  for (double a : values) {
+    for (double b : values) {
+      EXPECT_EQ(expanded_square<Exact>(a, b, 0).sign(), 0) << a << " " << b;
+      EXPECT_EQ(expanded_square<Exact>(a, b, 0x1p-1074).sign(), 1) << a << " " << b;
+      EXPECT_EQ(expanded_square<Exact>(a, b, -0x1p-1074).sign(), -1) << a << " " << b;
+    }
+  }
+  // A degree-6 product of extremes: (2^501 - 2^-1074)^6 > 0, and its difference from 2^3006 < 0.
+  const Exact x = Exact(0x1p500) + Exact(0x1p500) - Exact(0x1p-1074);
+  const Exact x6 = x * x * x * x * x * x;
+  const Exact p = Exact(0x1p501) * Exact(0x1p501) * Exact(0x1p501) * Exact(0x1p501) * Exact(0x1p501) * Exact(0x1p501);
+  EXPECT_EQ(x6.sign(), 1);
+  EXPECT_EQ((x6 - p).sign(), -1);
+}
+
+TEST(Bounded, CertainSignsAreTheExactSigns) {
+  // Where the running bound claims a sign, it is the exact sign; where the answer is 0 or below
+  // the rounding, it claims none.
+  const double values[] = {1.0, 0.1, -3.75e-200, 2.5e150, 0x1p500, -0x1p-1074, 1e-300, -7.0, 1e-17};
+  int certain = 0;
+  for (double a : values) {
+    for (double b : values) {
+      for (double e : {0.0, 1e-300, -1.0, 3.0, 0x1p-1074}) {
+        const int s = expanded_square<Bounded>(a, b, e).certain_sign();
+        const int x = expanded_square<Exact>(a, b, e).sign();
+        if (s != 2) {
+          ++certain;
+          EXPECT_EQ(s, x) << a << " " << b << " " << e;
+        }
+        if (x == 0) {
+          EXPECT_EQ(s, 2);
+        }
+      }
+    }
+  }
+  EXPECT_GT(certain, 0);
+}
+
 }  // namespace
 }  // namespace collide::test

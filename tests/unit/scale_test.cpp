@@ -127,7 +127,8 @@ TYPED_TEST(Scale, OverlapTolerancesStayFiniteAndSmallAtTheLimit) {
   const T m = max_magnitude<T>();
   const Circle<T> a(Vec2<T>(m, m), m), b(Vec2<T>(-m, -m), m);
   EXPECT_FALSE(overlaps(a, b));  // centres 2 sqrt(2) m apart, radii sum 2 m
-  const Calc tol = overlap_tolerance(a, b);
+  EXPECT_EQ(overlap_tolerance(a, b), 0.0);  // decisions are exact
+  const Calc tol = rounding_tolerance(a, b);
   EXPECT_TRUE(std::isfinite(tol));
   EXPECT_LT(tol, 1e-12 * double(m));
   const T gap = distance(a, b);
@@ -143,6 +144,27 @@ TYPED_TEST(Scale, OverlapTolerancesStayFiniteAndSmallAtTheLimit) {
   const Obb<T> obb(Vec2<T>(m, -m), Vec2<T>(m, m), T(0.5));
   EXPECT_TRUE(overlaps(obb, cap));
   EXPECT_TRUE(std::isfinite(double(distance(obb, b))));
+}
+
+TYPED_TEST(Scale, DecisionsAreExactAtTheExtremes) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // Exactly touching at the largest magnitude and at the smallest (subnormal) one, then one ulp
+  // apart: the squares of these differences overflow or underflow in the computation type.
+  const T m = max_magnitude<T>();
+  const T tiny = std::numeric_limits<T>::denorm_min();
+  for (const T s : {T(m / 8), T(tiny)}) {
+    SCOPED_TRACE(double(s));
+    const Circle<T> a(V(0, 0), 2 * s), b(V(3 * s, 4 * s), 3 * s);
+    EXPECT_TRUE(overlaps(a, b));
+    EXPECT_FALSE(overlaps(a, Circle<T>(V(3 * s, std::nextafter(4 * s, m)), 3 * s)));
+    const Capsule<T> cap(V(-5 * s, 0), V(-5 * s, -4 * s), 3 * s);  // 5 s away, radii 2 s + 3 s
+    EXPECT_TRUE(overlaps(a, cap));
+    EXPECT_FALSE(overlaps(a, Capsule<T>(V(std::nextafter(-5 * s, -m), 0), V(-5 * s, -4 * s), 3 * s)));
+    const Obb<T> box(V(4 * s, 0), V(2 * s, 2 * s), T(0));
+    EXPECT_TRUE(overlaps(a, box));  // touching at (2 s, 0)
+    EXPECT_FALSE(overlaps(a, Obb<T>(V(std::nextafter(4 * s, m), 0), V(2 * s, 2 * s), T(0))));
+  }
 }
 
 TYPED_TEST(Scale, ThinBoxCollapsedByRoundingIsASegment) {

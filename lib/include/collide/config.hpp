@@ -49,14 +49,16 @@ inline constexpr Calc kFaceTieTolerance = 0x1p-40;
 /// reference face is long); the witness point is used instead.
 inline constexpr Calc kClipLengthRatio = 0x1p40;
 
-/// Absolute floor of every error bound (about 3.1e-151). A bound, not the typical error: shapes
-/// whose every value is below 2^-400 are rescaled exactly by a power of two before any rounded
-/// computation (see detail::tiny_scale), so their answers are relative-accurate; the floor covers
-/// pairs mixing tiny and ordinary magnitudes, whose squares can still underflow.
+/// Absolute floor of the error bounds of rounded outputs (about 3.1e-151; decisions are exact
+/// and need none). A bound, not the typical error: shapes whose every value is below 2^-400 are
+/// rescaled exactly by a power of two before any rounded computation (see detail::tiny_scale), so
+/// their depths and distances are relative-accurate; the floor covers pairs mixing tiny and
+/// ordinary magnitudes, whose squares can still underflow.
 inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 
-/// Relative factor of the overlap error bound, in units of double's unit roundoff (2^-53).
-/// See overlap_tolerance() in queries.hpp.
+/// Relative factor of the error unit of rounded outputs (depths, normals, distances), in units
+/// of double's unit roundoff (2^-53). See rounding_tolerance() in queries.hpp; overlap decisions
+/// are exact and have no tolerance.
 inline constexpr Calc kOverlapErrorFactor = 64.0;
 
 }  // namespace collide

@@ -2,15 +2,8 @@
 /// @file contains.hpp
 /// Point containment: does a closed shape hold a point?
 ///
-/// Error contract:
-/// - AABB and polygon (and compounds made only of them): exact, by comparisons and the exact
-///   orient().
-/// - circle, capsule, OBB: the answer equals the exact one for the stored values whenever the
-///   distance from p to the shape's boundary exceeds contains_tolerance(s, p)
-///   = 64 * 2^-53 * max(S, |p|_inf) + 2^-500, S = largest absolute coordinate of bounds(s).
-///   (Squared distances are rounded; OBB corners are rounded before the exact point test.)
-/// - Round shapes below detail::kTinyCore are decided after exact rescaling, so the 2^-500 floor
-///   is a bound, not the typical error, for subnormal shapes.
+/// Error contract: exact for every kind. The answer is the exact answer for the stored values
+/// and point (the same exact signs as overlaps(), see decide.hpp); contains_tolerance() is 0.
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
@@ -25,35 +18,21 @@ namespace collide {
 
 namespace detail {
 
-/// Tiny round shapes are decided on exactly rescaled cores (as overlaps() does), so that squares
-/// of subnormal distances do not underflow to zero.
-inline bool contains_tiny(const Core& shape, const Vec2c& p) {
-  Core pc;
-  pc.push(p);
-  return decide::dilated_cores(pc, shape);
-}
-
 template <Scalar T>
-bool contains_concrete(const Circle<T>& s, const Vec2c& p) {
-  const Calc r = s.radius();
-  if (r < kTinyCore) return contains_tiny(core_of(s), p);
-  return (p - widen(s.center())).squaredNorm() <= r * r;
+bool contains_concrete(const Circle<T>& s, const Vec2c& p) noexcept {
+  return sign_dist2_minus(p, widen(s.center()), Radii{Calc(s.radius()), 0}) <= 0;
 }
 template <Scalar T>
 bool contains_concrete(const Aabb<T>& s, const Vec2c& p) noexcept {
   return s.min().x() <= p.x() && p.x() <= s.max().x() && s.min().y() <= p.y() && p.y() <= s.max().y();
 }
 template <Scalar T>
-bool contains_concrete(const Obb<T>& s, const Vec2c& p) {
-  Core pc;
-  pc.push(p);
-  return cores_intersect(pc, core_of(s));
+bool contains_concrete(const Obb<T>& s, const Vec2c& p) noexcept {
+  return point_obb_within(p, values_of(s), Radii{});
 }
 template <Scalar T>
-bool contains_concrete(const Capsule<T>& s, const Vec2c& p) {
-  const Calc r = s.radius();
-  if (r < kTinyCore) return contains_tiny(core_of(s), p);
-  return (p - closest_on_segment(p, widen(s.a()), widen(s.b()))).squaredNorm() <= r * r;
+bool contains_concrete(const Capsule<T>& s, const Vec2c& p) noexcept {
+  return point_segment_within(p, widen(s.a()), widen(s.b()), Radii{Calc(s.radius()), 0});
 }
 template <Scalar T>
 bool contains_concrete(const ConvexPolygon<T>& s, const Vec2c& p) noexcept {
@@ -77,7 +56,7 @@ bool contains_concrete(const Compound<T>& s, const Vec2c& p) {
 
 /// True when p lies in the closed shape (boundary included). p may be any value: NaN gives false
 /// (comparisons with NaN fail), infinities give false for every bounded shape.
-/// Error: exact for AABBs and polygons; otherwise see contains_tolerance().
+/// Error: exact for every kind.
 template <AnyShape S>
 bool contains(const S& s, const Vec2<scalar_of_t<S>>& p) {
   const Vec2c q = widen(p);
@@ -85,12 +64,11 @@ bool contains(const S& s, const Vec2<scalar_of_t<S>>& p) {
   return detail::visit_shape(s, [&](const auto& x) { return detail::contains_concrete(x, q); });
 }
 
-/// The error bound of contains(s, p) for the rounded shapes (circle, capsule, OBB):
-/// 64 * 2^-53 * max(S, |p|_inf) + 2^-500, S = largest absolute coordinate of bounds(s).
+/// The error bound of contains(s, p): 0, since every kind is decided exactly. Kept so that laws
+/// and callers state the contract in one form for every query.
 template <AnyShape S>
-Calc contains_tolerance(const S& s, const Vec2<scalar_of_t<S>>& p) {
-  const Calc m = std::max(detail::scale_of(bounds(s)), widen(p).cwiseAbs().maxCoeff());
-  return kOverlapErrorFactor * 0x1p-53 * m + kAbsoluteFloor;
+Calc contains_tolerance(const S&, const Vec2<scalar_of_t<S>>&) noexcept {
+  return 0;
 }
 
 }  // namespace collide

@@ -9,16 +9,14 @@
 ///
 /// Error contract (the one definition; README and the oracle properties refer to it):
 /// - S(a, b) = the largest absolute coordinate of bounds(a) and bounds(b).
-/// - overlap_tolerance(a, b) = delta = 64 * 2^-53 * S + 2^-500.
-/// - overlaps(a, b) equals the exact answer for the stored values whenever the exact signed
-///   distance between the shapes (gap if separated, minus penetration depth if overlapping) is
-///   larger than delta in magnitude. Pairs decided by exact predicates only (aabb-aabb,
-///   aabb-polygon, polygon-polygon, and compounds made of AABBs and polygons) are always exact.
+/// - overlaps(a, b) is exact for every pair and both scalars: it equals the exact answer for the
+///   stored values, touching included (decide.hpp); overlap_tolerance(a, b) = 0.
+/// - rounding_tolerance(a, b) = 64 * 2^-53 * S + 2^-500 is the error unit of the rounded outputs
+///   (contact depth, normal and points, distance, resolution margin).
 /// - contact(a, b) exists exactly when overlaps(a, b) is true.
-/// - Tiny shapes (every value below 2^-400) are decided on exactly rescaled cores, so their
-///   answers are relative-accurate; the 2^-500 floor is a bound, not the typical error.
-/// - contains() and raycast() state their own bounds in contains.hpp and raycast.hpp, in the
-///   same form (64 * 2^-53 * scale + floor).
+/// - Tiny shapes (every value below 2^-400) have their rounded outputs computed on exactly
+///   rescaled cores, so those are relative-accurate; the 2^-500 floor is a bound.
+/// - contains() is exact for every kind (contains.hpp); raycast() states its bound in raycast.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
@@ -70,7 +68,7 @@ bool overlaps_concrete(const A& a, const B& b) {
 }  // namespace detail
 
 /// True when the closed shapes share at least one point (touching counts).
-/// Error: see the contract at the top of this file; exact for AABB and polygon pairs.
+/// Error: exact for every pair (see the contract at the top of this file).
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 bool overlaps(const A& a, const B& b) {
@@ -88,11 +86,11 @@ Calc rounding_tolerance(const A& a, const B& b) {
   return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor;
 }
 
-/// The error bound delta of overlaps() for this pair: the band of exact signed distance around
-/// touching inside which overlaps() may differ from the exact answer.
+/// The error bound of overlaps() for this pair: 0, since every pair is decided exactly (the band
+/// of exact signed distance around touching inside which an answer could differ is empty).
 template <AnyShape A, AnyShape B>
-Calc overlap_tolerance(const A& a, const B& b) {
-  return rounding_tolerance(a, b);
+Calc overlap_tolerance(const A&, const B&) noexcept {
+  return 0;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -301,7 +299,9 @@ scalar_of_t<A> distance(const A& a, const B& b) {
           best = std::min(best, detail::core_gap(detail::core_of(pa), detail::core_of(pb)));
         });
       });
-      return static_cast<T>(std::max(Calc(0), best));
+      // Separated (decided exactly): a gap that rounds to zero is reported as the least positive T.
+      const T gap = static_cast<T>(std::max(Calc(0), best));
+      return gap > T(0) ? gap : std::numeric_limits<T>::denorm_min();
     });
   });
 }

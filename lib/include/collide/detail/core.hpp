@@ -206,15 +206,19 @@ inline bool point_in_polygon(const Vec2c& p, std::span<const Vec2c> poly) noexce
   return true;
 }
 
+/// The turn a -> b -> p (orient()); decide.hpp adds it for points kept unevaluated.
+inline int turn_of(const Vec2c& a, const Vec2c& b, const Vec2c& p) noexcept { return orient(a, b, p); }
+
 /// Some edge of `poly` has every point of `other` strictly outside it.
-inline bool has_separating_edge(std::span<const Vec2c> poly, std::span<const Vec2c> other) noexcept {
+template <class P>
+bool has_separating_edge(std::span<const Vec2c> poly, std::span<const P> other) noexcept {
   const std::size_t n = poly.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2c& a = poly[i];
     const Vec2c& b = poly[(i + 1) % n];
     bool all_out = true;
-    for (const Vec2c& q : other) {
-      if (orient(a, b, q) >= 0) {
+    for (const P& q : other) {
+      if (turn_of(a, b, q) >= 0) {
         all_out = false;
         break;
       }

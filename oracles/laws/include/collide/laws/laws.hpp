@@ -6,9 +6,9 @@
 /// found by one is judged the same way by the others.
 ///
 /// Every law takes shapes as Shape<T>, T = float or double (explicitly instantiated in
-/// collide_laws). "Tolerance" below is overlap_tolerance(a, b) from queries.hpp (the band of exact
-/// signed distance inside which overlaps() may disagree with the oracle) for decisions, and
-/// rounding_tolerance(a, b) (the error unit of rounded outputs) for depths, points and distances.
+/// collide_laws). Decisions are exact for every pair (overlap_tolerance(a, b) is 0): the laws on
+/// overlaps() demand equality. "Tolerance" below is rounding_tolerance(a, b) from queries.hpp (the
+/// error unit of rounded outputs) for depths, points and distances.
 
 #include "collide/collide.hpp"
 
@@ -45,9 +45,7 @@ struct Verdict {
 template <Scalar T>
 Relation relation(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 1. overlaps(a, b) equals oracle::overlaps(a, b); a difference is allowed only when the exact
-/// signed distance is within overlap_tolerance(a, b) (oracle::within_band), and is then reported
-/// as a disagreement.
+/// Law 1. overlaps(a, b) equals oracle::overlaps(a, b), for every pair and both scalars.
 template <Scalar T>
 Verdict agreement(const Shape<T>& a, const Shape<T>& b);
 
@@ -61,8 +59,8 @@ Verdict symmetry(const Shape<T>& a, const Shape<T>& b);
 
 /// Law 3. Moving both shapes by t (with translated()): when both moves are exact (every stored
 /// value moved by exactly t), overlaps() gives the identical answer; otherwise the moved pair
-/// must agree with the oracle, within the tolerance. An identical-answer failure inside the
-/// band is a disagreement, not a failure. A move that leaves the representable range is
+/// must agree with the oracle, and the answer may change only where the unmoved pair is within
+/// 4 eps_T S of touching (the rounding of the move). A move that leaves the representable range is
 /// rejected by translated() with a named error and is not a failure.
 template <Scalar T>
 Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t);
@@ -117,7 +115,7 @@ Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x);
 /// against x: an AABB as a 4-vertex ConvexPolygon and as an unrotated OBB; a circle as a
 /// zero-length capsule; a zero-length capsule as a circle; an OBB with axis (1, 0) as an AABB.
 /// A representation that cannot be built exactly (e.g. a degenerate box as a polygon) is skipped
-/// and named in the account. Different answers within the band are a disagreement.
+/// and named in the account. Any difference fails (decisions are exact).
 template <Scalar T>
 Verdict representation(const Shape<T>& a, const Shape<T>& x);
 
