@@ -353,6 +353,7 @@ namespace decide {
 using detail::Core;
 using detail::Radii;
 
+/// Exact: the closed circle a and the closed circle b share a point (touching counts).
 template <Scalar T>
 bool circle_circle(const Circle<T>& a, const Circle<T>& b) {
   const Vec2c ca = widen(a.center()), cb = widen(b.center());
@@ -362,6 +363,7 @@ bool circle_circle(const Circle<T>& a, const Circle<T>& b) {
   return detail::sign_dist2_minus(ca, cb, Radii{ra, rb}) <= 0;
 }
 
+/// Exact: the closed circle a and the closed box b share a point (touching counts).
 template <Scalar T>
 bool circle_aabb(const Circle<T>& a, const Aabb<T>& b) {
   const Vec2c c = widen(a.center());
@@ -372,22 +374,26 @@ bool circle_aabb(const Circle<T>& a, const Aabb<T>& b) {
   return detail::sign_dist2_minus(c, nearest, Radii{r, 0}) <= 0;
 }
 
+/// Exact: the closed circle a and the closed oriented box b share a point (touching counts).
 template <Scalar T>
 bool circle_obb(const Circle<T>& a, const Obb<T>& b) {
   return detail::point_obb_within(widen(a.center()), detail::values_of(b), Radii{Calc(a.radius()), 0});
 }
 
+/// Exact: the closed circle a and the closed capsule b share a point (touching counts).
 template <Scalar T>
 bool circle_capsule(const Circle<T>& a, const Capsule<T>& b) {
   return detail::point_segment_within(widen(a.center()), widen(b.a()), widen(b.b()),
                                       Radii{Calc(a.radius()), Calc(b.radius())});
 }
 
+/// Exact: the closed circle a and the closed polygon b share a point (touching counts).
 template <Scalar T>
 bool circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b) {
   return detail::dilated_cores_meet(detail::core_of(a), detail::core_of(b), Radii{Calc(a.radius()), 0});
 }
 
+/// Exact: the closed box a and the closed box b share a point (touching counts).
 template <Scalar T>
 bool aabb_aabb(const Aabb<T>& a, const Aabb<T>& b) {
 #if defined(COLLIDE_PLANTED_FAULT)
@@ -401,26 +407,31 @@ bool aabb_aabb(const Aabb<T>& a, const Aabb<T>& b) {
 #endif
 }
 
+/// Exact: the closed box a and the closed oriented box b share a point (touching counts).
 template <Scalar T>
 bool aabb_obb(const Aabb<T>& a, const Obb<T>& b) {
   return detail::obb_meets_core(detail::values_of(b), detail::core_of(a));
 }
 
+/// Exact: the closed box a and the closed capsule b share a point (touching counts).
 template <Scalar T>
 bool aabb_capsule(const Aabb<T>& a, const Capsule<T>& b) {
   return detail::dilated_cores_meet(detail::core_of(b), detail::core_of(a), Radii{Calc(b.radius()), 0});
 }
 
+/// Exact: the closed box a and the closed polygon b share a point (touching counts).
 template <Scalar T>
 bool aabb_polygon(const Aabb<T>& a, const ConvexPolygon<T>& b) {
   return detail::cores_intersect(detail::core_of(a), detail::core_of(b));
 }
 
+/// Exact: the closed oriented box a and the closed oriented box b share a point (touching counts).
 template <Scalar T>
 bool obb_obb(const Obb<T>& a, const Obb<T>& b) {
   return detail::obb_meets_obb(detail::values_of(a), detail::values_of(b));
 }
 
+/// Exact: the closed oriented box a and the closed capsule b share a point (touching counts).
 template <Scalar T>
 bool obb_capsule(const Obb<T>& a, const Capsule<T>& b) {
   const detail::ObbValues o = detail::values_of(a);
@@ -440,21 +451,25 @@ bool obb_capsule(const Obb<T>& a, const Capsule<T>& b) {
   return false;
 }
 
+/// Exact: the closed oriented box a and the closed polygon b share a point (touching counts).
 template <Scalar T>
 bool obb_polygon(const Obb<T>& a, const ConvexPolygon<T>& b) {
   return detail::obb_meets_core(detail::values_of(a), detail::core_of(b));
 }
 
+/// Exact: the closed capsule a and the closed capsule b share a point (touching counts).
 template <Scalar T>
 bool capsule_capsule(const Capsule<T>& a, const Capsule<T>& b) {
   return detail::dilated_cores_meet(detail::core_of(a), detail::core_of(b), Radii{Calc(a.radius()), Calc(b.radius())});
 }
 
+/// Exact: the closed capsule a and the closed polygon b share a point (touching counts).
 template <Scalar T>
 bool capsule_polygon(const Capsule<T>& a, const ConvexPolygon<T>& b) {
   return detail::dilated_cores_meet(detail::core_of(a), detail::core_of(b), Radii{Calc(a.radius()), 0});
 }
 
+/// Exact: the closed polygon a and the closed polygon b share a point (touching counts).
 template <Scalar T>
 bool polygon_polygon(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) {
   return detail::cores_intersect(detail::core_of(a), detail::core_of(b));
@@ -462,6 +477,7 @@ bool polygon_polygon(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) {
 
 /// The decision for a pair of primitives in registry order, by overload.
 template <Scalar T> bool pair(const Circle<T>& a, const Circle<T>& b) { return circle_circle(a, b); }
+/// @cond COLLIDE_SPECIALISATIONS
 template <Scalar T> bool pair(const Circle<T>& a, const Aabb<T>& b) { return circle_aabb(a, b); }
 template <Scalar T> bool pair(const Circle<T>& a, const Obb<T>& b) { return circle_obb(a, b); }
 template <Scalar T> bool pair(const Circle<T>& a, const Capsule<T>& b) { return circle_capsule(a, b); }
@@ -476,6 +492,7 @@ template <Scalar T> bool pair(const Obb<T>& a, const ConvexPolygon<T>& b) { retu
 template <Scalar T> bool pair(const Capsule<T>& a, const Capsule<T>& b) { return capsule_capsule(a, b); }
 template <Scalar T> bool pair(const Capsule<T>& a, const ConvexPolygon<T>& b) { return capsule_polygon(a, b); }
 template <Scalar T> bool pair(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) { return polygon_polygon(a, b); }
+/// @endcond
 
 }  // namespace decide
 

@@ -1,4 +1,5 @@
 // Uses the installed collide the way a game would; every expected value is worked out by hand.
+#include <collide/broadphase.hpp>
 #include <collide/collide.hpp>
 
 #include <cmath>
@@ -52,6 +53,35 @@ int main() {
   // Bad input gets a named error.
   const auto bad = collide::Circle<double>::make(V(0, 0), -1.0);
   check(!bad && bad.error().code() == collide::Error::NegativeRadius, "a negative radius is rejected");
+
+  // A persistent world: two overlapping bodies begin a contact; moving one away ends it.
+  collide::broadphase::World<double> world;
+  const auto first = world.add(a, 1);
+  const auto second = world.add(b, 2);
+  const auto& began = world.step();
+  check(began.began.size() == 1 && began.ended.empty(), "two overlapping bodies begin one contact");
+  world.move(second, collide::Circle<double>(V(5, 0), 1.0));
+  const auto& ended = world.step();
+  check(ended.ended.size() == 1 && ended.began.empty(), "moving one away ends it");
+  int at_origin = 0;
+  world.query_point(V(0, 0), [&](collide::broadphase::ProxyId id) { at_origin += id == first ? 1 : 100; });
+  check(at_origin == 1, "the point (0, 0) lies in the first body only");
+  const auto hit = world.raycast(collide::Ray<double>{V(-10, 0), V(1, 0)}, 100.0);
+  check(hit.has_value() && hit->body == first && std::fabs(hit->hit.t - 9) < 1e-12, "a ray along +x meets the first body at t = 9");
+
+  // The three structures give the same pairs.
+  collide::broadphase::DynamicTree<float> tree;
+  collide::broadphase::SweepAndPrune<float> sweep;
+  collide::broadphase::UniformGrid<float> grid(2.0f);
+  for (int i = 0; i < 20; ++i) {
+    const collide::Aabb<float> box(collide::Vec2<float>(float(i), 0.0f), collide::Vec2<float>(float(i) + 1.5f, 1.0f));
+    tree.add(box, std::uint64_t(i));
+    sweep.add(box, std::uint64_t(i));
+    grid.add(box, std::uint64_t(i));
+  }
+  const auto order = collide::broadphase::PairOrder::Sorted;
+  check(tree.pairs(order) == sweep.pairs(order) && tree.pairs(order) == grid.pairs(order) && tree.pairs(order).size() == 19,
+        "tree, sweep and grid find the same 19 pairs of 20 boxes in a row");
 
   std::printf("%s\n", failures == 0 ? "consumer: all checks passed" : "consumer: FAILED");
   return failures == 0 ? 0 : 1;

@@ -50,6 +50,7 @@ constexpr std::string_view name(BroadphaseErrc e) noexcept {
 /// Thrown by every broadphase operation that refuses its input; the structure is left unchanged.
 class BroadphaseError : public std::invalid_argument {
  public:
+  /// The named reason and a short account ("<name>: <what>").
   BroadphaseError(BroadphaseErrc code, std::string_view what)
       : std::invalid_argument(std::string(name(code)) + ": " + std::string(what)), code_(code) {}
   /// Why the call was refused.
@@ -62,17 +63,21 @@ class BroadphaseError : public std::invalid_argument {
 /// Handle of one proxy. A removed proxy's slot may be reused, but with a new generation, so an
 /// old handle is detected (InvalidProxy) instead of silently naming the new proxy.
 struct ProxyId {
-  std::uint32_t index = std::numeric_limits<std::uint32_t>::max();
-  std::uint32_t generation = 0;
+  std::uint32_t index = std::numeric_limits<std::uint32_t>::max();  ///< the slot
+  std::uint32_t generation = 0;  ///< the slot's use: a reused slot has a new generation
+  /// Field-wise equality.
   friend constexpr bool operator==(const ProxyId&, const ProxyId&) = default;
+  /// Field-wise order (a total order of handles).
   friend constexpr auto operator<=>(const ProxyId&, const ProxyId&) = default;
 };
 
 /// One overlapping pair, reported once, with a.index < b.index.
 struct ProxyPair {
-  ProxyId a;
-  ProxyId b;
+  ProxyId a;  ///< the proxy with the smaller index
+  ProxyId b;  ///< the other proxy
+  /// Field-wise equality.
   friend constexpr bool operator==(const ProxyPair&, const ProxyPair&) = default;
+  /// Field-wise order (a total order of handles).
   friend constexpr auto operator<=>(const ProxyPair&, const ProxyPair&) = default;
 };
 
@@ -84,6 +89,7 @@ struct Filter {
   std::uint32_t mask = 0xffffffffu;    ///< which groups this proxy pairs with (bits)
   /// The filter that accepts every proxy with a non-zero category and mask (queries' default).
   static constexpr Filter everything() noexcept { return {0xffffffffu, 0xffffffffu}; }
+  /// Same category and mask.
   friend constexpr bool operator==(const Filter&, const Filter&) = default;
 };
 
@@ -104,8 +110,8 @@ enum class PairOrder : std::uint8_t { Any, Sorted };
 /// checked on the way in).
 template <Scalar T>
 struct Box {
-  Vec2<T> min = Vec2<T>::Zero();
-  Vec2<T> max = Vec2<T>::Zero();
+  Vec2<T> min = Vec2<T>::Zero();  ///< lower-left corner
+  Vec2<T> max = Vec2<T>::Zero();  ///< upper-right corner
 };
 
 /// Closed-box overlap: touching (equal coordinates) counts. Exact (comparisons only).
@@ -139,9 +145,9 @@ inline Box<T> fattened(const Box<T>& b, T margin) noexcept {
 /// Every structure decides with ray_hits_box(), so all three report the same proxies.
 template <Scalar T>
 struct RaySegment {
-  Vec2c origin;
-  Vec2c direction;
-  Calc max_t;
+  Vec2c origin;     ///< where the segment starts (t = 0)
+  Vec2c direction;  ///< step per unit of t
+  Calc max_t;       ///< where the segment ends
 };
 
 /// Validates and widens a ray. Errors: BadRay.
@@ -233,12 +239,12 @@ class Slots {
  public:
   /// One proxy's record.
   struct Slot {
-    Box<T> box{};
-    std::uint64_t user = 0;
-    Filter filter{};
-    std::uint32_t generation = 0;
-    bool live = false;
-    Extra extra{};
+    Box<T> box{};                 ///< the stored box, as given
+    std::uint64_t user = 0;       ///< the caller's user data
+    Filter filter{};              ///< the proxy's filter
+    std::uint32_t generation = 0; ///< bumped on every reuse of the slot
+    bool live = false;            ///< false once removed
+    Extra extra{};                ///< the structure's own bookkeeping
   };
 
   /// Throws InvalidProxy unless id names a live proxy.

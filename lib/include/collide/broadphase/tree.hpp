@@ -49,14 +49,14 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
       const Box<T> b = box_of(boxes[i]);
       const ProxyId id = slots_.allocate(b, first_user + i, filter);
       const std::int32_t leaf = alloc_node();
-      nodes_[leaf].box = fattened(b, margin_);
-      nodes_[leaf].slot = id.index;
+      node(leaf).box = fattened(b, margin_);
+      node(leaf).slot = id.index;
       slots_[id.index].extra.leaf = leaf;
       leaves.push_back({{Calc(b.min.x()) + Calc(b.max.x()), Calc(b.min.y()) + Calc(b.max.y())}, leaf});
       ids.push_back(id);
     }
     root_ = build_top_down(leaves.data(), leaves.data() + leaves.size());
-    nodes_[root_].parent = -1;
+    node(root_).parent = -1;
     return ids;
   }
 
@@ -69,14 +69,14 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   template <class F>
   void query_fat(ProxyId id, F&& f) const {
     const std::uint32_t self = slots_.check(id);
-    const Box<T> fat = nodes_[slots_[self].extra.leaf].box;
+    const Box<T> fat = node(slots_[self].extra.leaf).box;
     visit([&](const Box<T>& b) { return boxes_overlap(b, fat); },
           [&](std::uint32_t s) { return s == self || call_continue(f, slots_.id(s)); });
   }
 
   /// Fat box of a proxy (contains box(id)). Errors: InvalidProxy.
   Aabb<T> fat_box(ProxyId id) const {
-    const Box<T>& b = nodes_[slots_[slots_.check(id)].extra.leaf].box;
+    const Box<T>& b = node(slots_[slots_.check(id)].extra.leaf).box;
     return Aabb<T>::make(b.min, b.max).value();
   }
 
@@ -120,7 +120,7 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     jobs.push({root_, root_});
     while (!jobs.empty()) {
       const Job j = jobs.pop();
-      const Node& a = nodes_[j.a];
+      const Node& a = node(j.a);
       if (j.a == j.b) {
         if (a.leaf()) continue;
         jobs.push({a.child1, a.child1});
@@ -128,7 +128,7 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
         jobs.push({a.child1, a.child2});
         continue;
       }
-      const Node& b = nodes_[j.b];
+      const Node& b = node(j.b);
       if (!boxes_overlap(a.box, b.box)) continue;
       if (a.leaf() && b.leaf()) {
         const auto& sa = slots_[a.slot];
@@ -151,26 +151,26 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   }
 
   /// Height of the tree (0 for one leaf, -1 when empty).
-  int height() const noexcept { return root_ < 0 ? -1 : nodes_[root_].height; }
+  int height() const noexcept { return root_ < 0 ? -1 : node(root_).height; }
 
   /// Checks the structure: parent links, heights, each inner box the union of its children, each
   /// leaf's fat box containing its stored box, leaf count == size(). (Balance is not strict: a new
   /// leaf may pair with a tall subtree when that is cheapest; rotations then shorten the path.)
   bool check_invariants() const {
     if (root_ < 0) return slots_.size() == 0;
-    if (nodes_[root_].parent != -1) return false;
+    if (node(root_).parent != -1) return false;
     std::size_t leaves = 0;
     std::vector<std::int32_t> st{root_};
     while (!st.empty()) {
       const std::int32_t i = st.back();
       st.pop_back();
-      const Node& n = nodes_[i];
+      const Node& n = node(i);
       if (n.leaf()) {
         ++leaves;
         if (n.height != 0 || !box_contains(n.box, slots_[n.slot].box) || slots_[n.slot].extra.leaf != i) return false;
         continue;
       }
-      const Node &c1 = nodes_[n.child1], &c2 = nodes_[n.child2];
+      const Node &c1 = node(n.child1), &c2 = node(n.child2);
       if (c1.parent != i || c2.parent != i) return false;
       if (n.height != 1 + std::max(c1.height, c2.height)) return false;
       const Box<T> u = merged(c1.box, c2.box);
@@ -215,7 +215,7 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     LocalStack<std::int32_t> stack;
     stack.push(root_);
     while (!stack.empty()) {
-      const Node& n = nodes_[stack.pop()];
+      const Node& n = node(stack.pop());
       if (!enter(n.box)) continue;
       if (n.leaf()) {
         if (!leaf(n.slot)) return;
@@ -248,20 +248,20 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     std::nth_element(first, mid, last, [axis](const Centred& a, const Centred& b) { return a.c[axis] < b.c[axis]; });
     const std::int32_t left = build_top_down(first, mid), right = build_top_down(mid, last);
     const std::int32_t parent = alloc_node();
-    Node& n = nodes_[parent];
+    Node& n = node(parent);
     n.child1 = left;
     n.child2 = right;
-    n.box = merged(nodes_[left].box, nodes_[right].box);
-    n.height = 1 + std::max(nodes_[left].height, nodes_[right].height);
-    nodes_[left].parent = nodes_[right].parent = parent;
+    n.box = merged(node(left).box, node(right).box);
+    n.height = 1 + std::max(node(left).height, node(right).height);
+    node(left).parent = node(right).parent = parent;
     return parent;
   }
 
   ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {
     const ProxyId id = slots_.allocate(b, user, filter);
     const std::int32_t leaf = alloc_node();
-    nodes_[leaf].box = fattened(b, margin_);
-    nodes_[leaf].slot = id.index;
+    node(leaf).box = fattened(b, margin_);
+    node(leaf).slot = id.index;
     slots_[id.index].extra.leaf = leaf;
     insert_leaf(leaf);
     return id;
@@ -273,9 +273,9 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     const Box<T> old = slots_[s].box;
     slots_[s].box = b;
     const std::int32_t leaf = slots_[s].extra.leaf;
-    if (box_contains(nodes_[leaf].box, b)) return false;
+    if (box_contains(node(leaf).box, b)) return false;
     remove_leaf(leaf);
-    nodes_[leaf].box = predicted(b, old);
+    node(leaf).box = predicted(b, old);
     insert_leaf(leaf);
     return true;
   }
@@ -304,53 +304,53 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     }
     const std::int32_t i = free_nodes_.back();
     free_nodes_.pop_back();
-    nodes_[i] = Node{};
+    node(i) = Node{};
     return i;
   }
   void free_node(std::int32_t i) { free_nodes_.push_back(i); }
 
   void insert_leaf(std::int32_t leaf) {
-    nodes_[leaf].parent = nodes_[leaf].child1 = nodes_[leaf].child2 = -1;
-    nodes_[leaf].height = 0;
+    node(leaf).parent = node(leaf).child1 = node(leaf).child2 = -1;
+    node(leaf).height = 0;
     if (root_ < 0) {
       root_ = leaf;
       return;
     }
-    const Box<T> lb = nodes_[leaf].box;
+    const Box<T> lb = node(leaf).box;
     // Descend to the sibling whose enlargement costs least (perimeter heuristic).
     std::int32_t i = root_;
-    while (!nodes_[i].leaf()) {
-      const Node& n = nodes_[i];
+    while (!node(i).leaf()) {
+      const Node& n = node(i);
       const Calc area = perimeter(n.box);
       const Calc combined = perimeter(merged(n.box, lb));
       const Calc cost = 2 * combined;            // new parent here
       const Calc inherited = 2 * (combined - area);  // pushed down to every descendant
       auto child_cost = [&](std::int32_t c) {
-        const Calc grown = perimeter(merged(nodes_[c].box, lb));
-        return nodes_[c].leaf() ? grown + inherited : grown - perimeter(nodes_[c].box) + inherited;
+        const Calc grown = perimeter(merged(node(c).box, lb));
+        return node(c).leaf() ? grown + inherited : grown - perimeter(node(c).box) + inherited;
       };
       const Calc c1 = child_cost(n.child1), c2 = child_cost(n.child2);
       if (cost < c1 && cost < c2) break;
       i = c1 < c2 ? n.child1 : n.child2;
     }
     const std::int32_t sibling = i;
-    const std::int32_t old_parent = nodes_[sibling].parent;
+    const std::int32_t old_parent = node(sibling).parent;
     const std::int32_t parent = alloc_node();
-    nodes_[parent].parent = old_parent;
-    nodes_[parent].box = merged(lb, nodes_[sibling].box);
-    nodes_[parent].height = nodes_[sibling].height + 1;
-    nodes_[parent].child1 = sibling;
-    nodes_[parent].child2 = leaf;
-    nodes_[sibling].parent = parent;
-    nodes_[leaf].parent = parent;
+    node(parent).parent = old_parent;
+    node(parent).box = merged(lb, node(sibling).box);
+    node(parent).height = node(sibling).height + 1;
+    node(parent).child1 = sibling;
+    node(parent).child2 = leaf;
+    node(sibling).parent = parent;
+    node(leaf).parent = parent;
     if (old_parent < 0) {
       root_ = parent;
-    } else if (nodes_[old_parent].child1 == sibling) {
-      nodes_[old_parent].child1 = parent;
+    } else if (node(old_parent).child1 == sibling) {
+      node(old_parent).child1 = parent;
     } else {
-      nodes_[old_parent].child2 = parent;
+      node(old_parent).child2 = parent;
     }
-    refit_from(nodes_[leaf].parent);
+    refit_from(node(leaf).parent);
   }
 
   void remove_leaf(std::int32_t leaf) {
@@ -358,19 +358,19 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
       root_ = -1;
       return;
     }
-    const std::int32_t parent = nodes_[leaf].parent;
-    const std::int32_t grand = nodes_[parent].parent;
-    const std::int32_t sibling = nodes_[parent].child1 == leaf ? nodes_[parent].child2 : nodes_[parent].child1;
+    const std::int32_t parent = node(leaf).parent;
+    const std::int32_t grand = node(parent).parent;
+    const std::int32_t sibling = node(parent).child1 == leaf ? node(parent).child2 : node(parent).child1;
     if (grand < 0) {
       root_ = sibling;
-      nodes_[sibling].parent = -1;
+      node(sibling).parent = -1;
     } else {
-      if (nodes_[grand].child1 == parent) {
-        nodes_[grand].child1 = sibling;
+      if (node(grand).child1 == parent) {
+        node(grand).child1 = sibling;
       } else {
-        nodes_[grand].child2 = sibling;
+        node(grand).child2 = sibling;
       }
-      nodes_[sibling].parent = grand;
+      node(sibling).parent = grand;
       refit_from(grand);
     }
     free_node(parent);
@@ -380,19 +380,19 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   void refit_from(std::int32_t i) {
     while (i >= 0) {
       i = balance(i);
-      Node& n = nodes_[i];
-      n.height = 1 + std::max(nodes_[n.child1].height, nodes_[n.child2].height);
-      n.box = merged(nodes_[n.child1].box, nodes_[n.child2].box);
+      Node& n = node(i);
+      n.height = 1 + std::max(node(n.child1).height, node(n.child2).height);
+      n.box = merged(node(n.child1).box, node(n.child2).box);
       i = n.parent;
     }
   }
 
   /// If node a is unbalanced, rotates its taller child up; returns the node now in a's place.
   std::int32_t balance(std::int32_t a) {
-    Node& A = nodes_[a];
+    Node& A = node(a);
     if (A.leaf() || A.height < 2) return a;
     const std::int32_t b = A.child1, c = A.child2;
-    const int diff = nodes_[c].height - nodes_[b].height;
+    const int diff = node(c).height - node(b).height;
     if (diff > 1) return rotate_up(a, c, b);
     if (diff < -1) return rotate_up(a, b, c);
     return a;
@@ -400,32 +400,32 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
 
   /// Rotates child `up` (taller) of node a into a's place; `other` is a's remaining child.
   std::int32_t rotate_up(std::int32_t a, std::int32_t up, std::int32_t other) {
-    Node& U = nodes_[up];
+    Node& U = node(up);
     const std::int32_t f = U.child1, g = U.child2;
     // up takes a's place.
     U.child1 = a;
-    U.parent = nodes_[a].parent;
-    nodes_[a].parent = up;
+    U.parent = node(a).parent;
+    node(a).parent = up;
     if (U.parent < 0) {
       root_ = up;
-    } else if (nodes_[U.parent].child1 == a) {
-      nodes_[U.parent].child1 = up;
+    } else if (node(U.parent).child1 == a) {
+      node(U.parent).child1 = up;
     } else {
-      nodes_[U.parent].child2 = up;
+      node(U.parent).child2 = up;
     }
     // The taller grandchild stays under up; the shorter one moves under a.
-    const bool f_taller = nodes_[f].height > nodes_[g].height;
+    const bool f_taller = node(f).height > node(g).height;
     const std::int32_t keep = f_taller ? f : g, give = f_taller ? g : f;
     U.child2 = keep;
-    nodes_[a].child1 = other;
-    nodes_[a].child2 = give;
-    nodes_[give].parent = a;
-    nodes_[other].parent = a;
-    Node& A = nodes_[a];
-    A.box = merged(nodes_[other].box, nodes_[give].box);
-    A.height = 1 + std::max(nodes_[other].height, nodes_[give].height);
-    U.box = merged(A.box, nodes_[keep].box);
-    U.height = 1 + std::max(A.height, nodes_[keep].height);
+    node(a).child1 = other;
+    node(a).child2 = give;
+    node(give).parent = a;
+    node(other).parent = a;
+    Node& A = node(a);
+    A.box = merged(node(other).box, node(give).box);
+    A.height = 1 + std::max(node(other).height, node(give).height);
+    U.box = merged(A.box, node(keep).box);
+    U.height = 1 + std::max(A.height, node(keep).height);
     return up;
   }
 
@@ -434,6 +434,10 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
 
   T margin_;
   Slots<T, Extra> slots_;
+  /// Node i; indices are std::int32_t so that -1 can mean "none".
+  Node& node(std::int32_t i) noexcept { return nodes_[std::size_t(i)]; }
+  const Node& node(std::int32_t i) const noexcept { return nodes_[std::size_t(i)]; }
+
   std::vector<Node> nodes_;
   std::vector<std::int32_t> free_nodes_;
   std::int32_t root_ = -1;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file broadphase/world.hpp
-/// The lecture's hierarchy end to end: a broadphase on the shapes' conservative bounding boxes
+/// The course notes' hierarchy end to end: a broadphase on the shapes' conservative bounding boxes
 /// proposes pairs, the exact pair decisions (overlaps, contact) settle them. World keeps bodies
 /// between steps and reports contacts that began and ended; the find_* helpers below answer once
 /// for a list of shapes (they build a broadphase on every call).
@@ -24,18 +24,20 @@ namespace collide::broadphase {
 
 /// Two shapes of the input list, by index, a < b.
 struct ShapePair {
-  std::size_t a;
-  std::size_t b;
+  std::size_t a;  ///< index of the first shape
+  std::size_t b;  ///< index of the second shape, b > a
+  /// Field-wise equality.
   friend constexpr bool operator==(const ShapePair&, const ShapePair&) = default;
+  /// Field-wise order (a total order of handles).
   friend constexpr auto operator<=>(const ShapePair&, const ShapePair&) = default;
 };
 
 /// A contact between shapes a < b of the input list (normal points from a toward b).
 template <Scalar T>
 struct ShapeContact {
-  std::size_t a;
-  std::size_t b;
-  Contact<T> contact;
+  std::size_t a;       ///< index of the first shape
+  std::size_t b;       ///< index of the second shape, b > a
+  Contact<T> contact;  ///< contact(shapes[a], shapes[b])
 };
 
 /// Every pair of shapes that overlaps(), sorted by (a, b). Same answer as testing all pairs:
@@ -79,8 +81,8 @@ Aabb<T> raycast_bounds(const Shape<T>& shape) {
 /// The first shape a ray meets: index into the input list and the hit.
 template <Scalar T>
 struct ShapeHit {
-  std::size_t index;
-  RayHit<T> hit;
+  std::size_t index;  ///< index of the shape in the input list
+  RayHit<T> hit;      ///< where the ray meets it
 };
 
 /// The nearest hit of origin + t direction, t in [0, max_t], over the shapes (ties: lowest
