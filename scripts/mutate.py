@@ -9,8 +9,9 @@ check failing there is left out of the matrix (and named), so only what a mutant
 
 Layers, each run to its first failure (the time to it is the kill time):
   properties  the property suite at CI depth (200 cases per test, seed 1, no shrinking)
-  replays     the regression cases (collide_replay_cases) and every fuzz target's corpus and
-              regression replays
+  replays     the regression cases (collide_replay_cases), every fuzz target's corpus and
+              regression replays, and the adversarial boundary cases at ctest's fixed seed
+              (20,000 cases of tests/adversarial, replayed identically every run)
   unit        the unit tests
 
 Writes build/reports/mutation.{md,json} (and a timestamped copy of each under
@@ -198,7 +199,7 @@ def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[st
             continue
         if path.startswith("properties/") and "planted" not in name and name != "collide_draw_cases":
             programs[path] = "properties"
-        elif name == "collide_replay_cases" or name.startswith("fuzz_replay_"):
+        elif name == "collide_replay_cases" or name.startswith("fuzz_replay_") or name == "adversarial_exact_decisions":
             programs[path] = "replays"
         elif path.startswith("tests/unit/"):
             programs[path] = "unit"
@@ -215,6 +216,9 @@ def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[st
             target = name[len("fuzz_replay_"):]
             layers["replays"].append([exe, str(ROOT / "fuzz" / "corpus" / target)])
             layers["replays"].append([exe, "--cases-of", regressions])
+        elif name == "adversarial_exact_decisions":
+            # The boundary cases ctest replays: a fixed seed, so the same 20,000 cases every run.
+            layers["replays"].append([exe, "--cases", "20000", "--seed", "1"])
         elif layer == "replays":
             layers["replays"].insert(0, [exe, regressions])
         else:
