@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The planted-fault check: the property suite built with COLLIDE_PLANTED_FAULT (the lecture's
+"""The planted-fault check: the property suite built with COLLIDE_PLANTED_FAULT (the course notes'
 AABB slip `b.max.y < a.min.x` in decide.hpp) must FAIL on the pairs that involve an AABB.
 
 Runs each law family on the aabb pairs (and compounds, whose bounding-box early-out uses the AABB

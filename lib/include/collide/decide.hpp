@@ -397,7 +397,7 @@ bool circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b) {
 template <Scalar T>
 bool aabb_aabb(const Aabb<T>& a, const Aabb<T>& b) {
 #if defined(COLLIDE_PLANTED_FAULT)
-  // The lecture's slip, kept behind a switch so the test suite can prove it notices:
+  // The course notes' slip, kept behind a switch so the test suite can prove it notices:
   // `b.max.y < a.min.x` where `a.min.y` is meant.
   return !(a.max().x() < b.min().x() || b.max().x() < a.min().x() || a.max().y() < b.min().y() ||
            b.max().y() < a.min().x());

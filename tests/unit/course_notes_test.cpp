@@ -1,4 +1,4 @@
-// The lecture's worked cases, one by one, for float and double. Each value is exactly
+// The course notes' worked cases, one by one, for float and double. Each value is exactly
 // representable, so every expectation is the exact answer, with no tolerance.
 
 #include "support.hpp"
@@ -7,10 +7,10 @@ namespace collide::test {
 namespace {
 
 template <class T>
-class Lecture : public ::testing::Test {};
-TYPED_TEST_SUITE(Lecture, Scalars);
+class CourseNotes : public ::testing::Test {};
+TYPED_TEST_SUITE(CourseNotes, Scalars);
 
-TYPED_TEST(Lecture, CircleCircleAroundTheBoundary) {
+TYPED_TEST(CourseNotes, CircleCircleAroundTheBoundary) {
   using T = TypeParam;
   using V = Vec2<T>;
   // Centres 5 apart (3-4-5): radii summing to exactly 5 touch. A squared-distance test with a
@@ -29,11 +29,11 @@ TYPED_TEST(Lecture, CircleCircleAroundTheBoundary) {
   EXPECT_TRUE(overlaps(Circle<T>(V(0, 0), T(0.5)), a));
 }
 
-TYPED_TEST(Lecture, AabbFourNonCollisionCasesOneByOne) {
+TYPED_TEST(CourseNotes, AabbFourNonCollisionCasesOneByOne) {
   using T = TypeParam;
   using V = Vec2<T>;
   // a's min.x (0) differs from its min.y (10) so that comparing against the wrong coordinate
-  // (the lecture's `b.max.y < a.min.x` slip) changes the answer in case 4.
+  // (the course notes' `b.max.y < a.min.x` slip) changes the answer in case 4.
   const Aabb<T> a(V(0, 10), V(2, 12));
   // Each b overlaps a on the other axis, so exactly one of the four conditions separates them.
   const Aabb<T> right(V(3, 10), V(5, 12));  // a.max.x < b.min.x
@@ -54,7 +54,7 @@ TYPED_TEST(Lecture, AabbFourNonCollisionCasesOneByOne) {
   EXPECT_TRUE(overlaps(a, Aabb<T>(V(2, 12), V(3, 13))));
 }
 
-TYPED_TEST(Lecture, CircleVsAabbUsesTheClosestPoint) {
+TYPED_TEST(CourseNotes, CircleVsAabbUsesTheClosestPoint) {
   using T = TypeParam;
   using V = Vec2<T>;
   const Aabb<T> box(V(0, 0), V(1, 1));
@@ -71,7 +71,7 @@ TYPED_TEST(Lecture, CircleVsAabbUsesTheClosestPoint) {
   EXPECT_FALSE(overlaps(Circle<T>(V(4, 5), T(5 - 0x1p-18)), box));
 }
 
-TYPED_TEST(Lecture, PolygonPolygonBySeparatingAxes) {
+TYPED_TEST(CourseNotes, PolygonPolygonBySeparatingAxes) {
   using T = TypeParam;
   using V = Vec2<T>;
   const ConvexPolygon<T> a{V(0, 0), V(4, 0), V(0, 4)};
@@ -91,7 +91,7 @@ TYPED_TEST(Lecture, PolygonPolygonBySeparatingAxes) {
   EXPECT_TRUE(overlaps(a, ConvexPolygon<T>{V(T(0.5), T(0.5)), V(1, T(0.5)), V(T(0.5), 1)}));
 }
 
-TYPED_TEST(Lecture, AabbResolutionPicksTheShortestOfFourCandidates) {
+TYPED_TEST(CourseNotes, AabbResolutionPicksTheShortestOfFourCandidates) {
   using T = TypeParam;
   using V = Vec2<T>;
   const Aabb<T> a(V(0, 0), V(4, 3));
