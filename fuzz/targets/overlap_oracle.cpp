@@ -1,7 +1,6 @@
 // Fuzz target overlap_oracle: two shapes of any kinds, float or double, decoded from raw bit
-// patterns; overlaps() must equal the exact oracle's answer except inside the documented band
-// (law "agreement": oracle::within_band(a, b, overlap_tolerance(a, b))), and must not depend on
-// the argument order (law "symmetry", checked when the pair is near its boundary).
+// patterns; overlaps() must equal the exact oracle's answer, touching included (law "agreement":
+// every decision is exact), and must not depend on the argument order (law "symmetry").
 //
 // Input: flags byte (bit 0: double), shape a, shape b (format in collide/fuzz/decode.hpp).
 
@@ -25,7 +24,7 @@ void decode_case(Reader& r, F&& f) {
 template <Scalar T>
 void check(const Shape<T>& a, const Shape<T>& b) {
   // Fast path of the agreement law: the library and the oracle give the same answer. Only a
-  // difference needs the band test (and the law's account).
+  // difference needs the law itself (and its account of the values).
   const bool got = overlaps(a, b);
   if (got != overlaps(b, a)) require("symmetry", laws::symmetry(a, b), a, some(b));
   try {
