@@ -62,35 +62,33 @@ void check_pair_queries() {
     const auto a = make_kind<KA, T>(Vec2<T>(0, 0), T(1));
     const auto b = make_kind<KB, T>(Vec2<T>(x, T(0.25)), T(1));
     const Shape<T> va(a), vb(b);
-    EXPECT_EQ(0, allocations_in([&] {
-                keep(overlaps(a, b));
-                keep(overlaps(b, a));
-                keep(overlaps(va, vb));
-              }))
-        << "overlaps " << label << " at x = " << x;
-    EXPECT_EQ(0, allocations_in([&] {
-                keep(contact(a, b));
-                keep(contact(b, a));
-                keep(contact(va, vb));
-              }))
-        << "contact " << label << " at x = " << x;
-    EXPECT_EQ(0, allocations_in([&] {
-                keep(resolve(a, b));
-                keep(resolve(b, a));
-                keep(resolve(va, vb));
-              }))
-        << "resolve " << label << " at x = " << x;
-    EXPECT_EQ(0, allocations_in([&] {
-                keep(distance(a, b));
-                keep(distance(va, vb));
-              }))
-        << "distance " << label << " at x = " << x;
-    EXPECT_EQ(0, allocations_in([&] {
-                keep(overlap_tolerance(a, b));
-                keep(rounding_tolerance(a, b));
-                keep(resolve_margin(a, b, T(1)));
-              }))
-        << "tolerances " << label << " at x = " << x;
+    const auto expect_none = [&](const char* query, auto&& f) {
+      EXPECT_EQ(0, allocations_in(f)) << query << " " << label << " at x = " << x;
+    };
+    expect_none("overlaps", [&] {
+      keep(overlaps(a, b));
+      keep(overlaps(b, a));
+      keep(overlaps(va, vb));
+    });
+    expect_none("contact", [&] {
+      keep(contact(a, b));
+      keep(contact(b, a));
+      keep(contact(va, vb));
+    });
+    expect_none("resolve", [&] {
+      keep(resolve(a, b));
+      keep(resolve(b, a));
+      keep(resolve(va, vb));
+    });
+    expect_none("distance", [&] {
+      keep(distance(a, b));
+      keep(distance(va, vb));
+    });
+    expect_none("tolerances", [&] {
+      keep(overlap_tolerance(a, b));
+      keep(rounding_tolerance(a, b));
+      keep(resolve_margin(a, b, T(1)));
+    });
   }
 }
 

@@ -284,8 +284,9 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
 // ---------------------------------------------------------------------------------------------
 // Distance.
 
-/// Euclidean distance between the closed shapes: 0 when they overlap, otherwise the gap.
-/// Error: a rounded result, within a few rounding_tolerance(a, b) of the exact gap.
+/// Euclidean distance between the closed shapes: 0 exactly when they overlap, otherwise the gap,
+/// at least the smallest positive T (a separated pair whose gap rounds to 0 is not reported as
+/// touching). Error: a rounded result, within a few rounding_tolerance(a, b) of the exact gap.
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 scalar_of_t<A> distance(const A& a, const B& b) {
