@@ -13,3 +13,4 @@
 #include "collide/raycast.hpp"
 #include "collide/registry.hpp"
 #include "collide/shapes.hpp"
+#include "collide/transform.hpp"

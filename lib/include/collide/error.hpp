@@ -27,6 +27,7 @@ enum class Error : std::uint8_t {
   NonConvex,          ///< polygon turns the wrong way, doubles back or winds more than once at index()
   NotARectangle,      ///< four corners given to an OBB do not form a rectangle
   EmptyCompound,      ///< a compound with no children
+  ZeroRotation,       ///< a transform's rotation given as the zero vector
 };
 
 /// Stable name of an error, e.g. "NonConvex".
@@ -43,6 +44,7 @@ constexpr std::string_view name(Error e) noexcept {
     case Error::NonConvex: return "NonConvex";
     case Error::NotARectangle: return "NotARectangle";
     case Error::EmptyCompound: return "EmptyCompound";
+    case Error::ZeroRotation: return "ZeroRotation";
   }
   return "Unknown";
 }

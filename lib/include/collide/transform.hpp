@@ -1,0 +1,92 @@
+#pragma once
+/// @file transform.hpp
+/// Transform<T>: where a body is and how it is turned. Shapes are stored in their body's local
+/// frame; a transform places them in the world without rebuilding or re-validating them.
+///
+/// Meaning (the one definition): a transform with stored position p and rotation q = (c, s) maps
+/// a local point x to the world point R(q) x + p, R(q) = [[c, -s], [s, c]], evaluated exactly.
+/// A shape with a transform is the exact image of its stored local values: its defining points
+/// (centres, corners, segment ends, vertices) are mapped, its radii and half extents are kept,
+/// and an OBB's axis is turned by R(q). The stored q is a unit vector rounded to T, so |q| may
+/// differ from 1 by about one rounding of T; the exact image uses q as stored.
+
+#include "collide/config.hpp"
+#include "collide/error.hpp"
+#include "collide/predicates.hpp"
+#include "collide/shapes.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace collide {
+
+/// A rigid placement: position plus rotation stored as (cosine, sine). Plain value, no allocation.
+template <Scalar T>
+class Transform {
+ public:
+  /// The identity: position (0, 0), rotation (1, 0). World-space queries mean this transform.
+  constexpr Transform() noexcept : p_(Vec2<T>::Zero()), q_(T(1), T(0)) {}
+
+  /// Position and counter-clockwise angle in radians; q = (cos angle, sin angle) rounded to T.
+  /// Errors: NonFinite, OutOfRange (index 0, 1 = position, 2 = angle).
+  static Expected<Transform> make(const Vec2<T>& position, T angle) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({position.x(), position.y(), angle}, &e)) return e;
+    const Calc a = static_cast<Calc>(angle);
+    return Transform(position, Vec2<T>(static_cast<T>(std::cos(a)), static_cast<T>(std::sin(a))));
+  }
+
+  /// Position and rotation given as a direction (the image of the local x axis). A vector whose
+  /// squared length is within 4 eps_T of 1 is stored bit for bit, so make_with_rotation(p,
+  /// x.rotation()) rebuilds the same transform; any other non-zero vector is normalised (in
+  /// double, then rounded to T) rather than rejected, as Obb::make_with_axis does.
+  /// Errors: NonFinite, OutOfRange (index 0, 1 = position, 2, 3 = rotation), ZeroRotation.
+  static Expected<Transform> make_with_rotation(const Vec2<T>& position, const Vec2<T>& rotation) noexcept {
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({position.x(), position.y(), rotation.x(), rotation.y()}, &e)) return e;
+    const Vec2c r = widen(rotation);
+    if (std::fabs(r.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
+      return Transform(position, rotation);
+    const Calc len = std::hypot(r.x(), r.y());
+    if (!(len > 0)) return ShapeError(Error::ZeroRotation, -1, "transform rotation is the zero vector");
+    return Transform(position, (r / len).template cast<T>());
+  }
+
+  /// A pure translation (rotation (1, 0)). Errors: NonFinite, OutOfRange (index 0, 1).
+  static Expected<Transform> make_translation(const Vec2<T>& position) noexcept {
+    return make_with_rotation(position, Vec2<T>(T(1), T(0)));
+  }
+
+  /// As make(), throwing the ShapeError.
+  Transform(const Vec2<T>& position, T angle) : Transform(make(position, angle).value()) {}
+
+  /// The stored position p (the image of the local origin).
+  const Vec2<T>& position() const noexcept { return p_; }
+  /// The stored rotation q = (cos, sin): |q| is 1 up to one rounding of T.
+  const Vec2<T>& rotation() const noexcept { return q_; }
+
+  /// R(q) x + p for a local point, computed in Calc (double): each coordinate is within
+  /// 2^-52 (|p| + |c x| + |s y|) of the exact image, and exact when every product and the sum
+  /// are representable (exact translations, quarter turns of representable values).
+  Vec2c apply(const Vec2c& x) const noexcept { return rotate(x) + widen(p_); }
+  /// R(q) v for a local direction, computed in Calc.
+  Vec2c rotate(const Vec2c& v) const noexcept {
+    const Calc c = q_.x(), s = q_.y();
+    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+  }
+  /// The transpose R(q)^T v (the inverse rotation when |q| = 1), computed in Calc.
+  Vec2c unrotate(const Vec2c& v) const noexcept {
+    const Calc c = q_.x(), s = q_.y();
+    return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
+  }
+
+  /// Same stored values.
+  friend bool operator==(const Transform& a, const Transform& b) noexcept { return a.p_ == b.p_ && a.q_ == b.q_; }
+
+ private:
+  Transform(const Vec2<T>& p, const Vec2<T>& q) noexcept : p_(p), q_(q) {}
+  Vec2<T> p_;
+  Vec2<T> q_;
+};
+
+}  // namespace collide
