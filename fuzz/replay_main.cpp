@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
         const collide::laws::Verdict v = collide::laws::replay(c);
         if (!v.ok) {
           std::fprintf(stderr, "%s: law %s still broken\n  expected: %s\n  got: %s\n  %s\n", p.string().c_str(),
-                       c.law.c_str(), v.expected.c_str(), v.got.c_str(), v.account.c_str());
+                       std::string(collide::laws::name(c.law)).c_str(), v.expected.c_str(), v.got.c_str(), v.account.c_str());
           status = 1;
         }
         ++case_files;

@@ -20,7 +20,7 @@ using namespace collide::fuzz;
 
 template <Scalar T>
 struct RayCase {
-  laws::RayInput<T> ray;
+  Ray<T> ray;
   T max_t;
 };
 
@@ -55,8 +55,8 @@ bool valid_ray(const RayCase<T>& r) {
 template <Scalar T>
 void check(const Shape<T>& a, const Shape<T>& b, const RayCase<T>& ray) {
   try {
-    require("contact", laws::contact_law(a, b), a, some(b));
-    require("distance", laws::distance_law(a, b), a, some(b));
+    require(laws::Law::Contact, laws::contact_law(a, b), a, some(b));
+    require(laws::Law::Distance, laws::distance_law(a, b), a, some(b));
   } catch (const oracle::Unsupported&) {
     // not judged
   }
@@ -79,7 +79,7 @@ void check(const Shape<T>& a, const Shape<T>& b, const RayCase<T>& ray) {
     if (!v.ok) {
       std::fprintf(stderr, "  ray origin %s direction %s max_t %s\n", format_point(widen(ray.ray.origin)).c_str(),
                    format_point(widen(ray.ray.direction)).c_str(), format_value(ray.max_t).c_str());
-      fail("raycast", a, std::optional<Shape<T>>(), v, [&](laws::Case& c) {
+      fail(laws::Law::Raycast, a, std::optional<Shape<T>>(), v, [&](laws::Case& c) {
         c.ox = ray.ray.origin.x();
         c.oy = ray.ray.origin.y();
         c.dx = ray.ray.direction.x();

@@ -26,13 +26,13 @@ void check(const Shape<T>& a, const Shape<T>& b) {
   // Fast path of the agreement law: the library and the oracle give the same answer. Only a
   // difference needs the law itself (and its account of the values).
   const bool got = overlaps(a, b);
-  if (got != overlaps(b, a)) require("symmetry", laws::symmetry(a, b), a, some(b));
+  if (got != overlaps(b, a)) require(laws::Law::Symmetry, laws::symmetry(a, b), a, some(b));
   try {
     if (got == oracle::overlaps(a, b)) return;
   } catch (const oracle::Unsupported&) {
     return;  // a question the oracle cannot decide exactly is not judged
   }
-  require("agreement", laws::agreement(a, b), a, some(b));
+  require(laws::Law::Agreement, laws::agreement(a, b), a, some(b));
 }
 
 }  // namespace

@@ -39,11 +39,11 @@ template <Scalar T>
 void check(const Shape<T>& a, const Shape<T>& b) {
   if (!overlaps(a, b)) {
     // Nothing to resolve: the move must be exactly zero.
-    if (resolve(a, b) != Vec2<T>::Zero()) require("resolution", laws::resolution(a, b), a, some(b));
+    if (resolve(a, b) != Vec2<T>::Zero()) require(laws::Law::Resolution, laws::resolution(a, b), a, some(b));
     return;
   }
   try {
-    require("resolution", laws::resolution(a, b), a, some(b));
+    require(laws::Law::Resolution, laws::resolution(a, b), a, some(b));
   } catch (const oracle::Unsupported&) {
     // the oracle cannot judge this pair exactly: not judged
   }

@@ -88,7 +88,7 @@ void check_queries(const Shape<T>& s, const Shape<T>& p, const char* probe) {
 
 template <Scalar T>
 void check_valid(const Shape<T>& s) {
-  require("bounds", laws::bounds_law(s), s, std::optional<Shape<T>>());
+  require(laws::Law::Bounds, laws::bounds_law(s), s, std::optional<Shape<T>>());
   const Shape<T> probes[] = {
       Shape<T>(Circle<T>(Vec2<T>(0, 0), T(1))),
       Shape<T>(Aabb<T>(Vec2<T>(-1, -1), Vec2<T>(1, 1))),
@@ -100,7 +100,7 @@ void check_valid(const Shape<T>& s) {
   check_queries(s, s, "itself");
   // A shape always overlaps itself (exactly; for a point-sized shape too).
   try {
-    if (!overlaps(s, s)) require("agreement", laws::agreement(s, s), s, std::optional<Shape<T>>(s));
+    if (!overlaps(s, s)) require(laws::Law::Agreement, laws::agreement(s, s), s, std::optional<Shape<T>>(s));
   } catch (const oracle::Unsupported&) {
     // not judged
   }
@@ -118,31 +118,22 @@ void check_valid(const Shape<T>& s) {
   }
 }
 
-/// A valid unit shape of a kind, to name the kind in a rejection case.
+/// A valid shape of a kind (its codec's sample; a compound of the first kind's), to name the
+/// kind in a rejection case.
 template <Scalar T>
 Shape<T> stand_in(ShapeKind kind) {
-  return visit_kind(kind, [&]<ShapeKind K>() -> Shape<T> {
-    const Vec2<T> o(0, 0), x(1, 0), y(0, 1), one(1, 1);
-    if constexpr (K == ShapeKind::Circle) return Circle<T>(o, T(1));
-    else if constexpr (K == ShapeKind::Aabb) return Aabb<T>(o, one);
-    else if constexpr (K == ShapeKind::Obb) return Obb<T>(o, one, T(0));
-    else if constexpr (K == ShapeKind::Capsule) return Capsule<T>(o, x, T(1));
-    else if constexpr (K == ShapeKind::Polygon) return ConvexPolygon<T>({o, x, y});
-    else return Compound<T>(std::vector<Primitive<T>>{Circle<T>(o, T(1))});
-  });
+  auto sample = [](ShapeKind k) {
+    const laws::KindCodec c = laws::codec_of(k);
+    return laws::ShapeData{k, std::vector<double>(c.sample.begin(), c.sample.end()), {}};
+  };
+  laws::ShapeData d = sample(kind);
+  if (laws::codec_of(kind).layout == laws::Layout::Children) d.children.push_back(sample(kKinds[0]));
+  return laws::from_data<T>(d);
 }
 
-/// Whether the bytes after the kind byte have law "rejection"'s value layout for this kind.
+/// Whether the bytes after the kind byte are exactly the kind's codec values (law "rejection").
 bool has_rejection_layout(ShapeKind kind, std::uint8_t form_byte) {
-  switch (kind) {
-    case ShapeKind::Circle:
-    case ShapeKind::Aabb:
-    case ShapeKind::Capsule: return true;
-    case ShapeKind::Obb: return form_byte % 3 == 1;      // make_with_axis: cx cy hx hy ux uy
-    case ShapeKind::Polygon: return (form_byte & 0x80) == 0;  // make, not make_hull
-    case ShapeKind::Compound: return false;
-  }
-  return false;
+  return visit_kind(kind, [&]<ShapeKind K>() { return Decoder<K, float>::stored_values(form_byte); });
 }
 
 template <Scalar T>
@@ -178,7 +169,7 @@ void run(const std::uint8_t* data, std::size_t size) {
     const laws::Verdict v = laws::rejection<T>(kind, values);
     if (!v.ok) {
       // The case holds the raw values; shape a only names the kind (a unit shape of it stands in).
-      fail("rejection", made ? made.value() : stand_in<T>(kind), std::optional<Shape<T>>(), v,
+      fail(laws::Law::Rejection, made ? made.value() : stand_in<T>(kind), std::optional<Shape<T>>(), v,
            [&](laws::Case& c) { c.values.assign(values.begin(), values.end()); });
     }
   }

@@ -323,7 +323,7 @@ void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Sha
   if (got == exact) return;
   ++t.disagreements;
   if (++t.bad_label[label] <= 2 && !t.save_dir.empty()) {
-    const auto path = laws::save_case(t.save_dir, laws::make_case<T>("agreement", a, b, laws::agreement(a, b),
+    const auto path = laws::save_case(t.save_dir, laws::make_case<T>(laws::Law::Agreement, a, b, laws::agreement(a, b),
                                                                      "adversarial exact_decisions seed " +
                                                                          std::to_string(t.seed)));
     std::printf("saved %s\n", path.string().c_str());

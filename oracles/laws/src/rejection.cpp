@@ -1,7 +1,9 @@
 // Law 9: every invalid input is rejected with its named error; valid input gives a shape.
 
+#include "collide/laws/codec.hpp"
 #include "support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -62,87 +64,68 @@ Built build(Make&& make, Ctor&& ctor) {
   return out;
 }
 
+/// Builds kind `kind` from its codec's values (a compound: one circle child per three values).
 template <Scalar T>
 Built build_kind(ShapeKind kind, std::span<const T> x, std::string& shape_error) {
-  using V = Vec2<T>;
-  switch (kind) {
-    case ShapeKind::Circle:
-      return build<Circle<T>>([&] { return Circle<T>::make(V(x[0], x[1]), x[2]); },
-                              [&] { (void)Circle<T>(V(x[0], x[1]), x[2]); });
-    case ShapeKind::Aabb:
-      return build<Aabb<T>>([&] { return Aabb<T>::make(V(x[0], x[1]), V(x[2], x[3])); },
-                            [&] { (void)Aabb<T>(V(x[0], x[1]), V(x[2], x[3])); });
-    case ShapeKind::Obb:
-      return build<Obb<T>>([&] { return Obb<T>::make_with_axis(V(x[0], x[1]), V(x[2], x[3]), V(x[4], x[5])); },
-                           [&] { (void)Obb<T>::make_with_axis(V(x[0], x[1]), V(x[2], x[3]), V(x[4], x[5])).value(); });
-    case ShapeKind::Capsule:
-      return build<Capsule<T>>([&] { return Capsule<T>::make(V(x[0], x[1]), V(x[2], x[3]), x[4]); },
-                               [&] { (void)Capsule<T>(V(x[0], x[1]), V(x[2], x[3]), x[4]); });
-    case ShapeKind::Polygon: {
-      std::vector<V> pts;
-      for (std::size_t i = 0; i + 1 < x.size(); i += 2) pts.emplace_back(x[i], x[i + 1]);
-      Built b = build<ConvexPolygon<T>>([&] { return ConvexPolygon<T>::make(std::span<const V>(pts)); },
-                                        [&] { (void)ConvexPolygon<T>(std::span<const V>(pts)); });
-      if (b.ok) {
-        // An accepted polygon must be strictly convex and counter-clockwise, made of input points.
-        const ConvexPolygon<T> p = ConvexPolygon<T>::make(std::span<const V>(pts)).value();
-        const std::size_t n = p.size();
-        for (std::size_t i = 0; i < n; ++i) {
-          if (orient(widen(p[i]), widen(p[(i + 1) % n]), widen(p[(i + 2) % n])) <= 0)
-            shape_error = "accepted polygon is not strictly convex counter-clockwise at vertex " + std::to_string(i);
-          if (std::find(pts.begin(), pts.end(), p[i]) == pts.end())
-            shape_error = "accepted polygon has a vertex not in the input";
+  return visit_kind(kind, [&]<ShapeKind K>() -> Built {
+    if constexpr (Codec<K>::layout == Layout::Children) {
+      // Children: one circle per three values; their errors come first, then EmptyCompound.
+      using Child = Codec<ShapeKind::Circle>;
+      std::vector<Primitive<T>> children;
+      for (std::size_t i = 0; i + 2 < x.size(); i += 3) {
+        const auto c = Child::make<T>(x.subspan(i, 3));
+        if (!c) return Built{false, c.error().code(), c.error().index(), c.error().what(), {}};
+        children.emplace_back(c.value());
+      }
+      return build<ShapeOf<K, T>>([&] { return ShapeOf<K, T>::make(children); },
+                                  [&] { (void)ShapeOf<K, T>(children); });
+    } else {
+      Built b = build<ShapeOf<K, T>>([&] { return Codec<K>::template make<T>(x); },
+                                     [&] { (void)Codec<K>::template construct<T>(x); });
+      if constexpr (K == ShapeKind::Polygon) {
+        if (b.ok) {
+          // An accepted polygon must be strictly convex and counter-clockwise, made of input points.
+          const std::vector<Vec2<T>> pts = Codec<K>::template points<T>(x);
+          const ConvexPolygon<T> p = Codec<K>::template make<T>(x).value();
+          const std::size_t n = p.size();
+          for (std::size_t i = 0; i < n; ++i) {
+            if (orient(widen(p[i]), widen(p[(i + 1) % n]), widen(p[(i + 2) % n])) <= 0)
+              shape_error = "accepted polygon is not strictly convex counter-clockwise at vertex " + std::to_string(i);
+            if (std::find(pts.begin(), pts.end(), p[i]) == pts.end())
+              shape_error = "accepted polygon has a vertex not in the input";
+          }
         }
       }
       return b;
     }
-    case ShapeKind::Compound: {
-      // Children: one circle per three values; their errors come first, then EmptyCompound.
-      std::vector<Primitive<T>> children;
-      for (std::size_t i = 0; i + 2 < x.size(); i += 3) {
-        const auto c = Circle<T>::make(V(x[i], x[i + 1]), x[i + 2]);
-        if (!c) return Built{false, c.error().code(), c.error().index(), c.error().what(), {}};
-        children.emplace_back(c.value());
-      }
-      return build<Compound<T>>([&] { return Compound<T>::make(children); }, [&] { (void)Compound<T>(children); });
-    }
-  }
-  return {};
+  });
 }
 
+/// The values `kind` takes from `given` (a compound: whole circles of three values).
 std::size_t arity(ShapeKind kind, std::size_t given) {
-  switch (kind) {
-    case ShapeKind::Circle: return 3;
-    case ShapeKind::Aabb: return 4;
-    case ShapeKind::Obb: return 6;
-    case ShapeKind::Capsule: return 5;
-    case ShapeKind::Polygon: return given - given % 2;
-    case ShapeKind::Compound: return given - given % 3;
-  }
-  return 0;
+  if (codec_of(kind).layout == Layout::Children) return given - given % Codec<ShapeKind::Circle>::fields.size();
+  return value_count(kind, given);
 }
 
-/// The error the kind's own rules give for finite, in-range values; nullopt when valid.
-/// Polygons are not predicted here (their error is checked to be one of the polygon errors).
+/// What the kind's own rules say of finite, in-range values (its codec's rule()).
 template <Scalar T>
-std::optional<Error> rule_error(ShapeKind kind, std::span<const T> x) {
-  switch (kind) {
-    case ShapeKind::Circle: return x[2] < 0 ? std::optional(Error::NegativeRadius) : std::nullopt;
-    case ShapeKind::Aabb:
-      return x[0] > x[2] || x[1] > x[3] ? std::optional(Error::MinGreaterThanMax) : std::nullopt;
-    case ShapeKind::Obb:
-      if (x[2] < 0 || x[3] < 0) return Error::NegativeExtent;
-      return x[4] == 0 && x[5] == 0 ? std::optional(Error::ZeroAxis) : std::nullopt;
-    case ShapeKind::Capsule: return x[4] < 0 ? std::optional(Error::NegativeRadius) : std::nullopt;
-    case ShapeKind::Compound: {
-      for (std::size_t i = 2; i < x.size(); i += 3) {
-        if (x[i] < 0) return Error::NegativeRadius;
-      }
-      return x.empty() ? std::optional(Error::EmptyCompound) : std::nullopt;
+Rule rule_of(ShapeKind kind, std::span<const T> x) {
+  return visit_kind(kind, [&]<ShapeKind K>() -> Rule {
+    if constexpr (Codec<K>::layout == Layout::Children) {
+      return {};  // judged child by child in rejection()
+    } else {
+      return Codec<K>::template rule<T>(x);
     }
-    case ShapeKind::Polygon: break;
+  });
+}
+
+std::string one_of(const std::vector<Error>& errors) {
+  std::string out;
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    if (i > 0) out += i + 1 == errors.size() ? " or " : ", ";
+    out += name(errors[i]);
   }
-  return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -181,7 +164,7 @@ Verdict rejection(ShapeKind kind, std::span<const T> all_values) {
   };
   if (!b.mismatch.empty()) return fail("constructor and make() agree (" + b.mismatch + ")"), v;
   if (!shape_error.empty()) return fail(shape_error), v;
-  if (kind == ShapeKind::Compound) {
+  if (codec_of(kind).layout == Layout::Children) {
     // Child by child (one circle per three values): its value errors, then its radius.
     for (std::size_t i = 0; i + 2 < n; i += 3) {
       const auto child = x.subspan(i, 3);
@@ -192,7 +175,7 @@ Verdict rejection(ShapeKind kind, std::span<const T> all_values) {
                std::to_string(i / 3));
         return v;
       }
-      if (child[2] < 0) {
+      if (!Codec<ShapeKind::Circle>::rule<T>(child).may_be_valid) {
         if (b.ok || b.code != Error::NegativeRadius) fail("NegativeRadius of child " + std::to_string(i / 3));
         return v;
       }
@@ -208,18 +191,14 @@ Verdict rejection(ShapeKind kind, std::span<const T> all_values) {
     if (b.index != want) return fail(std::string(name(ve->first)) + " at index " + std::to_string(want)), v;
     return v;
   }
-  if (kind == ShapeKind::Polygon) {
-    if (!b.ok && b.code != Error::TooFewVertices && b.code != Error::Collinear && b.code != Error::NonConvex)
-      fail("TooFewVertices, Collinear or NonConvex");
-    if (!b.ok && b.code == Error::NonConvex && (b.index < 0 || std::size_t(b.index) >= n / 2))
-      fail("NonConvex with the index of an input vertex");
-    return v;
-  }
-  const std::optional<Error> re = rule_error<T>(kind, x);
-  if (re) {
-    if (b.ok || b.code != *re) fail(std::string(name(*re)));
-  } else if (!b.ok) {
-    fail("a valid shape");
+  const Rule rule = rule_of<T>(kind, x);
+  const bool named = std::find(rule.errors.begin(), rule.errors.end(), b.code) != rule.errors.end();
+  if (!b.ok && !named) {
+    fail(rule.errors.empty() ? std::string("a valid shape") : one_of(rule.errors));
+  } else if (b.ok && !rule.may_be_valid) {
+    fail(one_of(rule.errors));
+  } else if (!b.ok && b.code == Error::NonConvex && (b.index < 0 || std::size_t(b.index) >= n / 2)) {
+    fail("NonConvex with the index of an input vertex");
   }
   return v;
 }

@@ -181,7 +181,7 @@ Verdict contains_law(const Shape<T>& s, const Vec2<T>& p) {
 }
 
 template <Scalar T>
-Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
+Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
   Verdict v;
 #if defined(COLLIDE_LAWS_HAVE_RAYCAST)
   auto fail = [&](std::string expected, std::string got) {
@@ -195,8 +195,8 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
     const Vec2c o = ray.origin.template cast<double>(), d = ray.direction.template cast<double>();
     const double len = d.norm();
     // The library's own bound (raycast.hpp): rays within it of the shape may hit or miss.
-    const double bound = raycast_tolerance(s, Ray<T>{ray.origin, ray.direction});
-    const auto hit = raycast(s, Ray<T>{ray.origin, ray.direction}, max_t);
+    const double bound = raycast_tolerance(s, ray);
+    const auto hit = raycast(s, ray, max_t);
     const bool inside = oracle::contains(s, o);
     v.relation = inside ? Relation::Contained : (hit ? Relation::Overlapping : Relation::Separated);
     if (!hit) {
@@ -292,8 +292,8 @@ Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
 
 template Verdict bounds_law<float>(const Shape<float>&);
 template Verdict bounds_law<double>(const Shape<double>&);
-template Verdict raycast_law<float>(const Shape<float>&, const RayInput<float>&, float);
-template Verdict raycast_law<double>(const Shape<double>&, const RayInput<double>&, double);
+template Verdict raycast_law<float>(const Shape<float>&, const Ray<float>&, float);
+template Verdict raycast_law<double>(const Shape<double>&, const Ray<double>&, double);
 template Verdict contains_law<float>(const Shape<float>&, const Vec2<float>&);
 template Verdict contains_law<double>(const Shape<double>&, const Vec2<double>&);
 

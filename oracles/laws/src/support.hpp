@@ -2,6 +2,7 @@
 // Helpers shared by the laws' translation units (not installed).
 
 #include "collide/collide.hpp"
+#include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
 #include "collide/laws/transform.hpp"
 #include "collide/oracle/oracle.hpp"
@@ -25,12 +26,7 @@ inline std::string num(double v) {
   return buf;
 }
 
-/// Hex float: every bit, for case files.
-inline std::string hex(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%a", v);
-  return buf;
-}
+using ::collide::laws::codec_detail::hex;
 
 inline std::string yes(bool b) { return b ? "true" : "false"; }
 

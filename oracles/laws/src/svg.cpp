@@ -210,11 +210,11 @@ void draw(std::ostream& out, const Case& c) {
   std::optional<std::pair<Vec2c, Vec2c>> push;
   std::optional<Vec2c> point;
   try {
-    if (c.law != "rejection") a = from_data<T>(c.a);
-    if (c.b && c.law != "rejection") b = from_data<T>(*c.b);
+    if (info(c.law).inputs != LawInputs::Values) a = from_data<T>(c.a);
+    if (c.b && info(c.law).inputs != LawInputs::Values) b = from_data<T>(*c.b);
     if (a) grow(v, first, bounds(*a));
     if (b) grow(v, first, bounds(*b));
-    if (a && b && c.law == "resolution") {
+    if (a && b && c.law == Law::Resolution) {
       const Vec2<T> r = resolve(*a, *b);
       const auto m = translated(*a, r);
       if (m) {
@@ -226,7 +226,7 @@ void draw(std::ostream& out, const Case& c) {
       push = std::pair{mid, Vec2c(mid + r.template cast<double>())};
       notes.push_back("resolve(a, b) = (" + detail::num(r.x()) + ", " + detail::num(r.y()) + "), moved a dashed green");
     }
-    if (a && b && c.law == "translation") {
+    if (a && b && c.law == Law::Translation) {
       const Vec2<T> t(static_cast<T>(c.tx), static_cast<T>(c.ty));
       const auto ma = translated(*a, t), mb = translated(*b, t);
       if (ma && mb) {
@@ -237,7 +237,7 @@ void draw(std::ostream& out, const Case& c) {
       }
       notes.push_back("moved pair dashed green, t = (" + detail::num(c.tx) + ", " + detail::num(c.ty) + ")");
     }
-    if (c.law == "raycast") {
+    if (c.law == Law::Raycast) {
       const Vec2c o(c.ox, c.oy), e = o + Vec2c(c.dx, c.dy) * c.max_t;
       grow(v, first, o.x(), o.y(), o.x(), o.y());
       grow(v, first, e.x(), e.y(), e.x(), e.y());
@@ -245,7 +245,7 @@ void draw(std::ostream& out, const Case& c) {
       notes.push_back("ray (" + detail::num(c.ox) + ", " + detail::num(c.oy) + ") + t (" + detail::num(c.dx) + ", " +
                       detail::num(c.dy) + "), arrow to max_t " + detail::num(c.max_t));
     }
-    if (c.law == "contains") {
+    if (c.law == Law::Contains) {
       point = Vec2c(c.ox, c.oy);
       grow(v, first, c.ox, c.oy, c.ox, c.oy);
       notes.push_back("point (" + detail::num(c.ox) + ", " + detail::num(c.oy) + "), black ring");
@@ -276,7 +276,7 @@ void draw(std::ostream& out, const Case& c) {
   if (point) marker(body, v, *point, Style{"#222", 0, ""});
   if (tiny) notes.push_back("ring and cross: a shape smaller than " + detail::num(kMinVisible) + " px, drawn enlarged");
 
-  std::vector<std::string> lines = {c.law + "  " + pair_name(c) + "  " + c.scalar + "  (a blue, b red)"};
+  std::vector<std::string> lines = {std::string(name(c.law)) + "  " + pair_name(c) + "  " + c.scalar + "  (a blue, b red)"};
   if (a) lines.push_back("a = " + detail::describe(*a));
   if (b) lines.push_back("b = " + detail::describe(*b));
   lines.push_back("expected: " + c.expected);

@@ -5,22 +5,23 @@
 /// without a Decoder fails to compile here.
 ///
 /// Byte format of one shape (scalars are raw bit patterns, 4 bytes for float, 8 for double):
-///   kind byte (value % kKindCount indexes kKinds), then per kind:
-///   circle   cx cy r
-///   aabb     min.x min.y max.x max.y
+///   kind byte (value % kKindCount indexes kKinds), then the kind's codec values (codec.hpp, in
+///   field order: circle cx cy r; aabb minx miny maxx maxy; capsule ax ay bx by r), except:
 ///   obb      form byte (% 3): 0 = make(center, half, angle): cx cy hx hy angle
-///                             1 = make_with_axis:           cx cy hx hy ux uy
+///                             1 = the codec's values:       cx cy hx hy ux uy (make_with_axis)
 ///                             2 = from_corners:             p0 p1 p2 p3 (x y each)
-///   capsule  ax ay bx by r
 ///   polygon  count byte: low 4 bits = vertex count (0..15), bit 7 = make_hull instead of make;
-///            then count points
+///            then count points (the codec's x y per vertex)
 ///   compound count byte (% 5 children; 0 is rejected as EmptyCompound); each child is a kind
 ///            byte (% (kKindCount - 1): every kind but compound) and that kind's values.
 
 #include "collide/collide.hpp"
 #include "collide/fuzz/reader.hpp"
+#include "collide/laws/codec.hpp"
 
+#include <array>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,34 +44,37 @@ Expected<S> build_with(Build how, Make&& make, Construct&& construct) {
 }
 }  // namespace detail
 
-/// Reads the values of one kind K and builds the shape. Specialised for every kind.
+/// Builds kind K from its codec's stored values, by the factory or the throwing constructor.
 template <ShapeKind K, Scalar T>
-struct Decoder;
+Expected<ShapeOf<K, T>> build_stored(std::span<const T> values, Build how) {
+  return detail::build_with<ShapeOf<K, T>>(
+      how, [&] { return laws::Codec<K>::template make<T>(values); },
+      [&] { return laws::Codec<K>::template construct<T>(values); });
+}
 
-template <Scalar T>
-struct Decoder<ShapeKind::Circle, T> {
-  static Expected<Circle<T>> decode(Reader& r, Build how) {
-    const Vec2<T> c = r.point<T>();
-    const T rad = r.scalar<T>(Role::Size);
-    return detail::build_with<Circle<T>>(
-        how, [&] { return Circle<T>::make(c, rad); }, [&] { return Circle<T>(c, rad); });
+/// Reads the values of one kind K and builds the shape. The primary template reads the codec's
+/// stored values (codec.hpp) after its byte prefix; kinds with other entry points specialise it.
+/// stored_values(first) says whether an input whose first byte after the kind byte is `first`
+/// holds exactly the codec's values (then law "rejection" judges it).
+template <ShapeKind K, Scalar T>
+struct Decoder {
+  static_assert(laws::Codec<K>::layout == laws::Layout::Fixed && laws::Codec<K>::byte_prefix.empty(),
+                "a kind with a count or a prefix needs its own Decoder");
+  static Expected<ShapeOf<K, T>> decode(Reader& r, Build how) {
+    const std::vector<T> x = laws::read_values<K, T>(r);
+    return build_stored<K, T>(std::span<const T>(x), how);
   }
-};
-
-template <Scalar T>
-struct Decoder<ShapeKind::Aabb, T> {
-  static Expected<Aabb<T>> decode(Reader& r, Build how) {
-    const Vec2<T> lo = r.point<T>();
-    const Vec2<T> hi = r.point<T>();
-    return detail::build_with<Aabb<T>>(
-        how, [&] { return Aabb<T>::make(lo, hi); }, [&] { return Aabb<T>(lo, hi); });
-  }
+  static constexpr bool stored_values(std::uint8_t) { return true; }
 };
 
 template <Scalar T>
 struct Decoder<ShapeKind::Obb, T> {
   static Expected<Obb<T>> decode(Reader& r, Build how) {
     const int form = r.byte() % 3;
+    if (form == 1) {
+      const std::vector<T> x = laws::read_values<ShapeKind::Obb, T>(r);
+      return build_stored<ShapeKind::Obb, T>(std::span<const T>(x), how);
+    }
     if (form == 2) {
       const Vec2<T> p0 = r.point<T>(), p1 = r.point<T>(), p2 = r.point<T>(), p3 = r.point<T>();
       return Obb<T>::from_corners(p0, p1, p2, p3);  // no throwing form exists
@@ -79,26 +83,12 @@ struct Decoder<ShapeKind::Obb, T> {
     const T hx = r.scalar<T>(Role::Size);
     const T hy = r.scalar<T>(Role::Size);
     const Vec2<T> half(hx, hy);
-    if (form == 0) {
-      const T angle = r.scalar<T>(Role::Other);
-      return detail::build_with<Obb<T>>(
-          how, [&] { return Obb<T>::make(c, half, angle); }, [&] { return Obb<T>(c, half, angle); });
-    }
-    const T ux = r.scalar<T>(Role::Other);
-    const T uy = r.scalar<T>(Role::Other);
-    return Obb<T>::make_with_axis(c, half, Vec2<T>(ux, uy));
+    const T angle = r.scalar<T>(Role::Other);
+    return detail::build_with<Obb<T>>(
+        how, [&] { return Obb<T>::make(c, half, angle); }, [&] { return Obb<T>(c, half, angle); });
   }
-};
-
-template <Scalar T>
-struct Decoder<ShapeKind::Capsule, T> {
-  static Expected<Capsule<T>> decode(Reader& r, Build how) {
-    const Vec2<T> a = r.point<T>();
-    const Vec2<T> b = r.point<T>();
-    const T rad = r.scalar<T>(Role::Size);
-    return detail::build_with<Capsule<T>>(
-        how, [&] { return Capsule<T>::make(a, b, rad); }, [&] { return Capsule<T>(a, b, rad); });
-  }
+  static_assert(laws::Codec<ShapeKind::Obb>::byte_prefix[0] == 1, "form 1 reads the codec's values");
+  static constexpr bool stored_values(std::uint8_t form) { return form % 3 == 1; }
 };
 
 template <Scalar T>
@@ -106,16 +96,15 @@ struct Decoder<ShapeKind::Polygon, T> {
   static constexpr std::size_t kMaxVertices = 15;
   static Expected<ConvexPolygon<T>> decode(Reader& r, Build how) {
     const std::uint8_t head = r.byte();
-    const std::size_t n = head & 0x0f;
-    const bool hull = (head & 0x80) != 0;
-    std::vector<Vec2<T>> pts;
-    pts.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) pts.push_back(r.point<T>());
-    const std::span<const Vec2<T>> view(pts);
-    if (hull) return ConvexPolygon<T>::make_hull(view);  // no throwing form exists
-    return detail::build_with<ConvexPolygon<T>>(
-        how, [&] { return ConvexPolygon<T>::make(view); }, [&] { return ConvexPolygon<T>(view); });
+    const bool hull = !stored_values(head);
+    const std::vector<T> x = laws::read_values<ShapeKind::Polygon, T>(r, head & 0x0f);
+    if (hull) {
+      const std::vector<Vec2<T>> pts = laws::Codec<ShapeKind::Polygon>::points<T>(std::span<const T>(x));
+      return ConvexPolygon<T>::make_hull(std::span<const Vec2<T>>(pts));  // no throwing form exists
+    }
+    return build_stored<ShapeKind::Polygon, T>(std::span<const T>(x), how);
   }
+  static constexpr bool stored_values(std::uint8_t head) { return (head & 0x80) == 0; }
 };
 
 /// One compound child: any kind but compound.
@@ -155,7 +144,15 @@ struct Decoder<ShapeKind::Compound, T> {
     return detail::build_with<Compound<T>>(
         how, [&] { return Compound<T>::make(children); }, [&] { return Compound<T>(children); });
   }
+  static constexpr bool stored_values(std::uint8_t) { return false; }
 };
+
+/// A transform's stored values px py qx qy (codec.hpp), through make_with_rotation().
+template <Scalar T>
+Expected<Transform<T>> decode_transform(Reader& r) {
+  const std::array<T, 4> x = laws::read_transform_values<T>(r);
+  return laws::TransformCodec::make<T>(std::span<const T, 4>(x));
+}
 
 /// Reads a kind byte and that kind's values.
 template <Scalar T>

@@ -9,6 +9,7 @@
 
 #include "collide/fuzz/decode.hpp"
 #include "collide/laws/case_file.hpp"
+#include "collide/laws/hash.hpp"
 #include "collide/laws/laws.hpp"
 
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -66,9 +68,7 @@ inline std::string source_line() {
 
 /// FNV-1a of the input, for file names of raw regression inputs.
 inline std::uint32_t input_hash(const std::uint8_t* data, std::size_t size) {
-  std::uint32_t h = 2166136261u;
-  for (std::size_t i = 0; i < size; ++i) h = (h ^ data[i]) * 16777619u;
-  return h;
+  return laws::fnv1a(std::span<const std::uint8_t>(data, size));
 }
 
 inline const char* case_dir() {
@@ -79,19 +79,19 @@ inline const char* case_dir() {
 /// A broken law on shapes: account, case file, abort. `complete` fills the law's other inputs
 /// into the case (the ray of a raycast case, the values of a rejection case).
 template <Scalar T>
-[[noreturn]] void fail(std::string_view law, const Shape<T>& a, const std::optional<Shape<T>>& b,
+[[noreturn]] void fail(laws::Law law, const Shape<T>& a, const std::optional<Shape<T>>& b,
                        const laws::Verdict& v, const std::function<void(laws::Case&)>& complete = {}) {
   std::fprintf(stderr,
                "\n== collide fuzz target %s: law '%.*s' broken (%s)\n"
                "  a: %s\n",
-               std::string(kTarget).c_str(), int(law.size()), law.data(), scalar_name<T>(), describe(a).c_str());
+               std::string(kTarget).c_str(), int(name(law).size()), name(law).data(), scalar_name<T>(), describe(a).c_str());
   if (b) std::fprintf(stderr, "  b: %s\n", describe(*b).c_str());
   std::fprintf(stderr, "  expected: %s\n  got:      %s\n  account:  %s\n", v.expected.c_str(), v.got.c_str(),
                v.account.c_str());
   if (const char* dir = case_dir()) {
     try {
       std::filesystem::create_directories(dir);
-      laws::Case c = laws::make_case(std::string(law), a, b, v, source_line());
+      laws::Case c = laws::make_case(law, a, b, v, source_line());
       if (complete) complete(c);
       const std::filesystem::path path = laws::save_case(dir, c);
       std::fprintf(stderr, "  case file: %s\n", path.string().c_str());
@@ -130,7 +130,7 @@ template <class... Parts>
 
 /// Checks a law's verdict: a broken law fails; an allowed disagreement passes.
 template <Scalar T>
-void require(std::string_view law, const laws::Verdict& v, const Shape<T>& a, const std::optional<Shape<T>>& b) {
+void require(laws::Law law, const laws::Verdict& v, const Shape<T>& a, const std::optional<Shape<T>>& b) {
   if (!v.ok) fail(law, a, b, v);
 }
 

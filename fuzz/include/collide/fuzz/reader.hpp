@@ -8,6 +8,7 @@
 /// bytes: any byte string decodes, and a truncated input is a valid (shorter) case.
 
 #include "collide/config.hpp"
+#include "collide/laws/codec.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -16,13 +17,9 @@
 
 namespace collide::fuzz {
 
-/// What a scalar means, for the mutator: positions move with their shape, sizes do not.
-enum class Role : std::uint8_t {
-  X,     ///< x coordinate of a point of the shape (center, corner, vertex, endpoint)
-  Y,     ///< y coordinate of such a point
-  Size,  ///< radius or half extent
-  Other  ///< angle, axis component, ray parameter
-};
+/// What a scalar means, for the mutator: the codec's roles (positions move with their shape,
+/// sizes do not; Other also covers angles and ray parameters).
+using Role = laws::Role;
 
 /// One scalar of the input: its byte offset and width (4 = float, 8 = double), its role and the
 /// index of the shape (group) it belongs to.

@@ -15,6 +15,7 @@
 ///     child aabb -0x1p+0 -0x1p+0 0x1p+0 0x1p+0        # aabb minx miny maxx maxy
 ///     child capsule 0x0p+0 0x0p+0 0x1p+0 0x0p+0 0x1p-2   # capsule ax ay bx by r
 ///     child polygon 3 x0 y0 x1 y1 x2 y2               # polygon n then n vertices
+///     transform a 0x1p+0 0x0p+0 0x1p+0 0x0p+0         # optional: px py qx qy (identity when absent)
 ///     translation 0x1p+0 0x1p-3                       # translation law
 ///     rotation 1 mirror 0                             # rotation law
 ///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast law: origin, direction
@@ -26,9 +27,12 @@
 ///     account <one line of text>
 ///
 /// Float cases store each float as the hex of its exact double value; reading checks that it
-/// narrows back exactly. OBBs store the stored unit axis, which make_with_axis() keeps bit for bit.
+/// narrows back exactly. The values of each kind are its codec's (codec.hpp), rebuilt through
+/// the kind's factory, which must keep them bit for bit (an OBB's stored unit axis, a polygon in
+/// normal form).
 
 #include "collide/collide.hpp"
+#include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
 
 #include <filesystem>
@@ -40,28 +44,17 @@
 
 namespace collide::laws {
 
-/// A malformed case file (line number and reason in what()).
-class CaseError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// A shape as raw stored values, independent of the scalar. Layout of values per kind:
-/// circle cx cy r; aabb minx miny maxx maxy; obb cx cy hx hy ux uy (stored unit axis);
-/// capsule ax ay bx by r; polygon x0 y0 x1 y1 ... (counter-clockwise as stored);
-/// compound: no values, children instead.
-struct ShapeData {
-  ShapeKind kind = ShapeKind::Circle;
-  std::vector<double> values;
-  std::vector<ShapeData> children;
-};
+/// A malformed case file (line number and reason in what()); the codec's error.
+using CaseError = CodecError;
 
 /// One regression case: the law, the scalar, the inputs, and what was expected and found.
 struct Case {
-  std::string law;                 ///< one of kLawNames
+  Law law = Law::Agreement;        ///< the law (its name in the file)
   std::string scalar = "double";   ///< "float" or "double"
   ShapeData a;                     ///< first shape (the compound for hierarchy, the shape for bounds/raycast)
   std::optional<ShapeData> b;      ///< second shape, for pair laws
+  std::optional<TransformData> transform_a;  ///< a's placement (identity when absent)
+  std::optional<TransformData> transform_b;  ///< b's placement (identity when absent)
   double tx = 0, ty = 0;           ///< translation law: the move
   int quarter_turns = 0;           ///< rotation law
   bool mirror = false;             ///< rotation law
@@ -72,16 +65,6 @@ struct Case {
   std::string source;              ///< where it came from: property + pair + seed, or fuzz target + input
   std::string account;             ///< the law's account, one line
 };
-
-/// The stored values of a shape.
-template <Scalar T>
-ShapeData to_data(const Shape<T>& s);
-
-/// Rebuilds the shape with exactly the stored bits. Throws CaseError when the values do not make a
-/// valid shape of that scalar (not exactly representable, rejected by make(), or an OBB axis that
-/// no input reproduces).
-template <Scalar T>
-Shape<T> from_data(const ShapeData& d);
 
 /// Pair name of the case ("circle_obb"), or the single kind name when there is no b.
 std::string pair_name(const Case& c);
@@ -112,7 +95,7 @@ std::filesystem::path save_case(const std::filesystem::path& dir, const Case& c)
 
 /// A case from a law's inputs and its verdict (expected/got are filled from the account).
 template <Scalar T>
-Case make_case(std::string law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v,
+Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v,
                std::string source);
 
 }  // namespace collide::laws

@@ -12,6 +12,9 @@
 
 #include "collide/collide.hpp"
 
+#include <cstdint>
+#include <iterator>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -84,14 +87,6 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict bounds_law(const Shape<T>& s);
 
-/// A ray for raycast_law: origin + t * direction, t >= 0. Mirrors collide::Ray<T> so that the
-/// laws do not depend on which header declares the library's ray.
-template <Scalar T>
-struct RayInput {
-  Vec2<T> origin;
-  Vec2<T> direction;
-};
-
 /// Law 6b. raycast(s, ray, max_t), judged by raycast.hpp's contract with its bound
 /// delta = raycast_tolerance(s, ray): a hit has 0 <= t <= max_t, its point is within delta of the
 /// shape and of origin + t * direction; an origin inside the shape (deeper than delta) hits at
@@ -103,7 +98,7 @@ struct RayInput {
 /// lies outside the shape (for compounds, outside some child near the point) at distance at least
 /// L - 2 bounds - 4 eps_T L, which holds for every normal in the boundary's normal cone there.
 template <Scalar T>
-Verdict raycast_law(const Shape<T>& s, const RayInput<T>& ray, T max_t);
+Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
 /// Law 7. overlaps(compound, x) == any child overlaps x (library against library, identical), and
 /// the bounding-box early-out never changes an answer: when the compound's cached box misses x's
@@ -164,16 +159,55 @@ Verdict scene(const Shape<T>& group);
 /// (first offending value in argument order), then the kind's own named errors (negative radius
 /// or extent, min > max, zero axis; polygons: TooFewVertices, Collinear or NonConvex), and
 /// valid values give a shape. Never throws, crashes or hangs. Value layout per kind is that of
-/// ShapeData in case_file.hpp (circle cx cy r; aabb minx miny maxx maxy; obb cx cy hx hy ux uy;
-/// capsule ax ay bx by r; polygon x0 y0 x1 y1 ...); compound is built from one circle child.
+/// its codec (codec.hpp: the factory, the field order and the kind's rules); a compound is built
+/// from one circle child per three values.
 template <Scalar T>
 Verdict rejection(ShapeKind kind, std::span<const T> values);
 
-/// The names of the laws as they appear in case files, reports and test names.
-inline constexpr std::string_view kLawNames[] = {"agreement",  "symmetry",       "translation",
-                                                 "rotation",   "resolution",     "bounds",
-                                                 "raycast",    "hierarchy",      "representation",
-                                                 "contact",    "distance",       "rejection",
-                                                 "contains",   "touching",       "scene"};
+/// What a law takes, and so how its tests are registered: per unordered pair of kinds, per kind,
+/// raw values per kind, or one group of shapes.
+enum class LawInputs : std::uint8_t { Pair, Shape, Values, Scene };
+
+/// Every law, in the order of law_table.inc.
+enum class Law : std::uint8_t {
+#define COLLIDE_LAW(id, law_name, inputs, description) id,
+#include "collide/laws/law_table.inc"
+#undef COLLIDE_LAW
+};
+
+/// One row of the law table.
+struct LawInfo {
+  Law law;                       ///< the law
+  std::string_view name;         ///< as in case files, test names, ctest names, reports
+  LawInputs inputs;              ///< what it takes
+  std::string_view description;  ///< one line
+};
+
+/// The law table (law_table.inc), in Law order.
+inline constexpr LawInfo kLaws[] = {
+#define COLLIDE_LAW(id, law_name, inputs, description) {Law::id, #law_name, LawInputs::inputs, description},
+#include "collide/laws/law_table.inc"
+#undef COLLIDE_LAW
+};
+
+/// Number of laws.
+inline constexpr std::size_t kLawCount = std::size(kLaws);
+
+/// The table row of a law.
+constexpr const LawInfo& info(Law l) noexcept { return kLaws[static_cast<std::size_t>(l)]; }
+/// The name of a law, e.g. "agreement".
+constexpr std::string_view name(Law l) noexcept { return info(l).name; }
+/// The law named `s`, or nullopt.
+constexpr std::optional<Law> law_from_name(std::string_view s) noexcept {
+  for (const LawInfo& row : kLaws) {
+    if (row.name == s) return row.law;
+  }
+  return std::nullopt;
+}
+/// "pair", "shape", "values", "scene".
+constexpr std::string_view name(LawInputs i) noexcept {
+  constexpr std::string_view names[] = {"pair", "shape", "values", "scene"};
+  return names[static_cast<std::size_t>(i)];
+}
 
 }  // namespace collide::laws
