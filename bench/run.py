@@ -13,6 +13,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import collide_tools  # noqa: E402
 
 
 def build(build_dir):
@@ -21,7 +23,7 @@ def build(build_dir):
         preset = "ci" if os.path.basename(build_dir.rstrip("/")) == "ci" else "default"
         subprocess.run(["cmake", "--preset", preset, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
                         "-DCOLLIDE_BUILD_BENCH=ON"], cwd=ROOT, check=True)
-    subprocess.run(["cmake", "--build", build_dir, "--target", "collide_bench", "-j2"], cwd=ROOT, check=True)
+    collide_tools.build_targets(build_dir, ["collide_bench"])
     for cand in (os.path.join(build_dir, "bench", "collide_bench"), os.path.join(build_dir, "collide_bench")):
         if os.path.exists(cand):
             return cand
@@ -37,7 +39,7 @@ def run(exe, repetitions, min_time, flt, raw_path):
         cmd.append("--benchmark_filter=" + flt)
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     sys.stderr.write(proc.stderr)
-    checks = [l for l in proc.stderr.splitlines() + proc.stdout.splitlines() if l.startswith("check ")]
+    checks = [ln for ln in proc.stderr.splitlines() + proc.stdout.splitlines() if ln.startswith("check ")]
     if proc.returncode != 0:
         sys.stdout.write(proc.stdout[:4000])
         sys.exit("collide_bench failed (exit %d): cross-check or run error; no figures written" % proc.returncode)
@@ -74,8 +76,7 @@ def main():
                     help="only the broadphase scale and bad-load program (1M boxes; 10k all overlapping)")
     args = ap.parse_args()
     if args.scale:
-        subprocess.run(["cmake", "--build", os.path.abspath(args.build_dir), "--target", "collide_broadphase_scale",
-                        "-j2"], cwd=ROOT, check=True)
+        collide_tools.build_targets(os.path.abspath(args.build_dir), ["collide_broadphase_scale"])
         exe = os.path.join(os.path.abspath(args.build_dir), "bench", "collide_broadphase_scale")
         sys.exit(subprocess.run([exe]).returncode)
     build_dir = os.path.abspath(args.build_dir)
@@ -90,7 +91,9 @@ def main():
         parts = name.split("/")
         if parts[0] == "overlap" and parts[3] == "collide":
             pair, placement = parts[1], parts[2]
-            get = lambda impl, kind="overlap": m.get("%s/%s/%s/%s" % (kind, pair, placement, impl))
+
+            def get(impl, kind="overlap"):
+                return m.get("%s/%s/%s/%s" % (kind, pair, placement, impl))
             row = {"pair": pair, "set": placement, "collide_ns": get("collide"),
                    "box2d_test_overlap_ns": get("box2d_test_overlap"), "box2d_manifold_ns": get("box2d_manifold"),
                    "naive_ns": get("naive"), "collide_contact_ns": get("collide", "contact"),
@@ -123,38 +126,31 @@ def main():
             row[impl + "_over_box2d"] = ratio(row[impl + "_ns_per_box"], b2)
         events.append(row)
 
-    def fmt(x, w=8):
-        return ("%*.2f" % (w, x)) if isinstance(x, (int, float)) and x is not None else " " * (w - 1) + "-"
+    def fmt(x):
+        return "%.2f" % x if isinstance(x, (int, float)) else "-"
 
     print("\nPer pair (ns, medians of %d repetitions; ratio = collide / peer, < 1 is faster)" % args.repetitions)
-    print("%-16s %-6s %8s %8s %8s %8s | %7s %7s %7s | %8s %8s %7s" % (
-        "pair", "set", "collide", "b2Test", "b2Manif", "naive", "/Test", "/Manif", "/naive", "contact", "b2Manif", "ratio"))
-    for r in pairs:
-        print("%-16s %-6s %s %s %s %s | %s %s %s | %s %s %s" % (
-            r["pair"], r["set"], fmt(r["collide_ns"]), fmt(r["box2d_test_overlap_ns"]), fmt(r["box2d_manifold_ns"]),
-            fmt(r["naive_ns"]), fmt(r["ratio_vs_test_overlap"], 7), fmt(r["ratio_vs_manifold"], 7),
-            fmt(r["ratio_vs_naive"], 7), fmt(r["collide_contact_ns"]), fmt(r["box2d_manifold_contact_ns"]),
-            fmt(r["contact_ratio_vs_manifold"], 7)))
-    print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster)")
-    print("%-7s %-7s %9s %9s %9s %10s %9s | %7s %7s %7s" % (
-        "N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid"))
-    for r in broad:
-        print("%-7d %-7s %s %s %s %s %s | %s %s %s" % (
-            r["n"], r["op"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
-            fmt(r["box2d_tree_ns_per_box"], 10), fmt(r["brute_ns_per_box"], 9), fmt(r["box2d_over_tree"], 7),
-            fmt(r["box2d_over_sweep"], 7), fmt(r["box2d_over_grid"], 7)))
-        if r["tree_batch_ns_per_box"] is not None:
-            print("%-7d %-7s tree add_batch (top-down) %s ns per box, speedup over Box2D tree %s" % (
-                r["n"], r["op"], fmt(r["tree_batch_ns_per_box"], 9), fmt(r["box2d_over_tree_batch"], 7)))
-
+    collide_tools.print_table(
+        ["pair", "set", "collide", "b2Test", "b2Manif", "naive", "/Test", "/Manif", "/naive", "contact", "b2Manif",
+         "ratio"],
+        [[r["pair"], r["set"]] + [fmt(r[k]) for k in (
+            "collide_ns", "box2d_test_overlap_ns", "box2d_manifold_ns", "naive_ns", "ratio_vs_test_overlap",
+            "ratio_vs_manifold", "ratio_vs_naive", "collide_contact_ns", "box2d_manifold_contact_ns",
+            "contact_ratio_vs_manifold")] for r in pairs], right=set(range(2, 12)))
+    print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster; batch = tree add_batch)")
+    collide_tools.print_table(
+        ["N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid", "batch", "xBatch"],
+        [[r["n"], r["op"]] + [fmt(r[k]) for k in (
+            "tree_ns_per_box", "sweep_ns_per_box", "grid_ns_per_box", "box2d_tree_ns_per_box", "brute_ns_per_box",
+            "box2d_over_tree", "box2d_over_sweep", "box2d_over_grid", "tree_batch_ns_per_box",
+            "box2d_over_tree_batch")] for r in broad], right={0} | set(range(2, 12)))
     if events:
         print("\nPair events per frame, every box moving (ns per box; ratio = collide / Box2D b2BroadPhase)")
-        print("%-7s %9s %9s %9s %10s | %7s %7s %7s" % ("N", "tree", "sweep", "grid", "b2BroadPh", "tree", "sweep", "grid"))
-        for r in events:
-            print("%-7d %s %s %s %s | %s %s %s" % (
-                r["n"], fmt(r["tree_ns_per_box"], 9), fmt(r["sweep_ns_per_box"], 9), fmt(r["grid_ns_per_box"], 9),
-                fmt(r["box2d_broadphase_ns_per_box"], 10), fmt(r["tree_over_box2d"], 7), fmt(r["sweep_over_box2d"], 7),
-                fmt(r["grid_over_box2d"], 7)))
+        collide_tools.print_table(
+            ["N", "tree", "sweep", "grid", "b2BroadPh", "/tree", "/sweep", "/grid"],
+            [[r["n"]] + [fmt(r[k]) for k in (
+                "tree_ns_per_box", "sweep_ns_per_box", "grid_ns_per_box", "box2d_broadphase_ns_per_box",
+                "tree_over_box2d", "sweep_over_box2d", "grid_over_box2d")] for r in events], right=set(range(8)))
 
     goals = []
     for r in pairs:
@@ -163,7 +159,8 @@ def main():
                 goals.append({"goal": "%s/%s faster than Box2D %s" % (r["pair"], r["set"], peer[9:]),
                               "value": r[peer], "met": r[peer] < 1})
         if r["pair"] in ("obb_obb", "polygon_polygon") and r["set"] == "near" and r["collide_ns"] is not None:
-            goals.append({"goal": "%s/near <= 25 ns" % r["pair"], "value": r["collide_ns"], "met": r["collide_ns"] <= 25})
+            goals.append({"goal": "%s/near <= 25 ns" % r["pair"], "value": r["collide_ns"],
+                          "met": r["collide_ns"] <= 25})
         if r["ratio_vs_naive"] is not None:
             goals.append({"goal": "%s/%s within 1.5x of naive" % (r["pair"], r["set"]), "value": r["ratio_vs_naive"],
                           "met": r["ratio_vs_naive"] <= 1.5})
@@ -188,7 +185,8 @@ def main():
         print("  [%s] %s: %s" % ("met" if g["met"] else "MISSED", g["goal"], g["value"]))
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
-           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad, "broadphase_events": events,
+           "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
+           "broadphase_events": events,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:

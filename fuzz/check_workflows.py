@@ -204,8 +204,8 @@ def check_cflite_job(problems, jw, steps, matrix, project_language, on, seen):
                 problems.add(sw, "no fuzz-seconds")
             storage = "storage-repo" in with_
             seen["modes"].setdefault(mode, []).append({"sanitizers": set(sanitizers), "storage": storage,
-                                                      "schedule": "schedule" in on,
-                                                      "pull_request": "pull_request" in on})
+                                                       "schedule": "schedule" in on,
+                                                       "pull_request": "pull_request" in on})
 
 
 def check_promises(problems, seen):
@@ -270,7 +270,8 @@ PLANTED = {
     "a four-field cron": SOUND.replace("'0 1 * * *'", "'0 1 * *'"),
     "a step with neither run nor uses": SOUND.replace("      - run: .ci/run", "      - name: nothing"),
     "YAML that does not parse": SOUND.replace("jobs:", "jobs: [", 1),
-    "a coverage run of an address build": SOUND.replace("      - run: .ci/run", """      - uses: google/clusterfuzzlite/actions/build_fuzzers@v1
+    "a coverage run of an address build": SOUND.replace(
+        "      - run: .ci/run", """      - uses: google/clusterfuzzlite/actions/build_fuzzers@v1
         with: {language: c++}
       - uses: google/clusterfuzzlite/actions/run_fuzzers@v1
         with: {mode: coverage, fuzz-seconds: 60}"""),

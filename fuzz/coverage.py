@@ -21,7 +21,8 @@ import shutil
 import subprocess
 import sys
 
-from cmake_cache import cache_value
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "scripts"))
+from collide_tools import build_targets, cache_value, print_table  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -31,8 +32,6 @@ def tool(name):
         if shutil.which(cand):
             return cand
     sys.exit(f"coverage.py: {name} not found (Debian package llvm)")
-
-
 
 
 def run(cmd, **kw):
@@ -58,14 +57,13 @@ def main():
             return 2
     targets = [t for t in (cache_value(build, "COLLIDE_FUZZ_TARGETS") or "").split(";") if t]
     if not targets:
-        print("coverage.py: no fuzz targets configured (is collide::laws built?)")
+        print(f"coverage.py: {build} lists no fuzz targets (COLLIDE_FUZZ_TARGETS)")
         return 2
     exes = [f"fuzz_replay_{t}" for t in targets]
-    with_props = not args.no_properties and (ROOT / "properties/CMakeLists.txt").exists()
+    with_props = not args.no_properties
     if with_props:
         exes.append("collide_properties")
-    if run(["cmake", "--build", str(build), "-j", str(args.jobs), "--target"] + exes, cwd=ROOT).returncode != 0:
-        return 2
+    build_targets(build, exes, args.jobs)
 
     prof = build / "profiles"
     shutil.rmtree(prof, ignore_errors=True)
@@ -91,7 +89,8 @@ def main():
 
     merged = build / "merged.profdata"
     raws = sorted(prof.glob("*.profraw"))
-    if not raws or run([tool("llvm-profdata"), "merge", "-sparse", "-o", str(merged)] + [str(p) for p in raws]).returncode:
+    merge = [tool("llvm-profdata"), "merge", "-sparse", "-o", str(merged)] + [str(p) for p in raws]
+    if not raws or run(merge).returncode:
         return 2
     objects = [str(binaries[0])] + [a for b in binaries[1:] for a in ("-object", str(b))]
     lib = str(ROOT / "lib")
@@ -112,13 +111,14 @@ def main():
     def pct(c, n):
         return round(100.0 * c / n, 1) if n else 100.0
 
-    print(f"\n{'file':58} {'lines':>16} {'branches':>16}")
-    for f in sorted(files, key=lambda f: f["file"]):
-        print(f"{f['file']:58} {f['lines_covered']:>6}/{f['lines']:<5} {pct(f['lines_covered'], f['lines']):5.1f}% "
-              f"{f['branches_covered']:>6}/{f['branches']:<5} {pct(f['branches_covered'], f['branches']):5.1f}%")
     lt, bt = totals["lines"], totals["branches"]
-    print(f"{'total lib/':58} {lt['covered']:>6}/{lt['count']:<5} {pct(lt['covered'], lt['count']):5.1f}% "
-          f"{bt['covered']:>6}/{bt['count']:<5} {pct(bt['covered'], bt['count']):5.1f}%")
+    print()
+    print_table(["file", "lines", "%", "branches", "%"],
+                [[f["file"], f"{f['lines_covered']}/{f['lines']}", f"{pct(f['lines_covered'], f['lines']):.1f}",
+                  f"{f['branches_covered']}/{f['branches']}", f"{pct(f['branches_covered'], f['branches']):.1f}"]
+                 for f in sorted(files, key=lambda f: f["file"])]
+                + [["total lib/", f"{lt['covered']}/{lt['count']}", f"{pct(lt['covered'], lt['count']):.1f}",
+                    f"{bt['covered']}/{bt['count']}", f"{pct(bt['covered'], bt['count']):.1f}"]], right={1, 2, 3, 4})
     report = {
         "scope": "lib/",
         "sources": {"corpora": targets, "property_suite": with_props},

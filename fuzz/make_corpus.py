@@ -1,40 +1,30 @@
 #!/usr/bin/env python3
 """Writes the seed corpora fuzz/corpus/<target>/ in the input format of collide/fuzz/decode.hpp.
 
-The kinds and their order are read from the registry (lib/include/collide/registry.hpp, enum
-ShapeKind), so a kind added there without an encoder here stops this script instead of silently
-shifting every kind byte. Seeds are small and deterministic: every unordered pair of kinds in
-float and double, overlapping, touching (for the kinds where unit shapes 2 apart touch exactly)
-and separated; every factory form with valid and invalid values; a few broadphase scripts.
+The kinds, their stored fields (with roles), sample shapes and byte forms are read from the build
+(collide_describe, which prints the codecs of oracles/laws/include/collide/laws/codec.hpp), so a
+kind added to the registry and its codec gets seeds here without an edit. Seeds are small and
+deterministic: every unordered pair of kinds in float and double, overlapping, touching (for the
+kinds whose samples 2 apart touch exactly) and separated; every kind with valid values, special
+values (NaN, infinities, huge, subnormal) and values each of its rules rejects; a few broadphase
+scripts.
 
-usage: fuzz/make_corpus.py [--out fuzz/corpus] [--drop-failing BUILD_DIR]
+usage: fuzz/make_corpus.py [--build-dir build/ci] [--out fuzz/corpus] [--drop-failing]
 (replaces the seed files it writes, s-*.bin). With --drop-failing, every seed is run through
-BUILD_DIR/fuzz/fuzz_replay_<target> and seeds that fail are left out and listed: a seed corpus
+the build's fuzz/fuzz_replay_<target> and seeds that fail are left out and listed: a seed corpus
 must pass (ctest replays it); failures belong in tests/regressions/ as cases.
 """
 import argparse
 import itertools
-import math
 import pathlib
-import re
 import struct
 import subprocess
 import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-
-
-def registry_kinds():
-    text = (ROOT / "lib/include/collide/registry.hpp").read_text()
-    m = re.search(r"enum class ShapeKind\s*:\s*std::uint8_t\s*\{([^}]*)\}", text)
-    if not m:
-        sys.exit("make_corpus: cannot find enum ShapeKind in registry.hpp")
-    return [k.strip().lower() for k in m.group(1).split(",") if k.strip()]
-
-
-KINDS = registry_kinds()
-PRIMITIVES = [k for k in KINDS if k != "compound"]
+sys.path.insert(0, str(ROOT / "scripts"))
+import collide_tools  # noqa: E402
 
 
 def scalar(v, dbl):
@@ -45,57 +35,58 @@ def scalars(values, dbl):
     return b"".join(scalar(v, dbl) for v in values)
 
 
-def kind_byte(kind, among=None):
-    return bytes([(among or KINDS).index(kind)])
+class Codecs:
+    """The build's codecs: kind -> layout, fields, sample, byte prefix."""
+
+    def __init__(self, described):
+        self.kinds = {k["name"]: k for k in described["kinds"]}
+        self.names = [k["name"] for k in described["kinds"]]
+
+    def placed(self, kind, cx, cy, size):
+        """The sample values of `kind` scaled by size and moved to (cx, cy), by the fields' roles."""
+        k = self.kinds[kind]
+        fields = k["fields"]
+        out = []
+        for i, v in enumerate(k["sample"]):
+            role = fields[i % len(fields)]["role"]
+            out.append(cx + size * v if role == "x" else cy + size * v if role == "y" else
+                       size * v if role == "size" else v)
+        return out
+
+    def encode(self, kind, values, dbl, children=()):
+        """Kind byte, byte prefix, count byte (vertices, children), then the values or children."""
+        k = self.kinds[kind]
+        out = bytes([k["index"]]) + bytes(k["byte_prefix"])
+        if k["layout"] == "vertices":
+            out += bytes([len(values) // len(k["fields"])])
+        if k["layout"] == "children":
+            return out + bytes([len(children)]) + b"".join(children)
+        return out + scalars(values, dbl)
+
+    def shape(self, kind, cx, cy, size, dbl):
+        """A shape of `kind` around (cx, cy); a compound of the first two kinds side by side."""
+        if self.kinds[kind]["layout"] == "children":
+            first, second = [n for n in self.names if self.kinds[n]["layout"] != "children"][:2]
+            kids = (self.shape(first, cx - size / 2, cy, size / 2, dbl),
+                    self.shape(second, cx + size / 2, cy, size / 2, dbl))
+            return self.encode(kind, [], dbl, kids)
+        return self.encode(kind, self.placed(kind, cx, cy, size), dbl)
+
+    def first_value_offset(self, kind):
+        """Offset of the first scalar after the kind byte."""
+        k = self.kinds[kind]
+        return 1 + len(k["byte_prefix"]) + (0 if k["layout"] == "fixed" else 1)
 
 
-def payload(kind, cx, cy, size, dbl, form=0):
-    """Values of one shape of `kind` centred near (cx, cy) with radius-like size."""
-    s = size
-    if kind == "circle":
-        return scalars([cx, cy, s], dbl)
-    if kind == "aabb":
-        return scalars([cx - s, cy - s, cx + s, cy + s], dbl)
-    if kind == "obb":
-        if form == 0:
-            return bytes([0]) + scalars([cx, cy, s, s / 2, 0.5], dbl)
-        if form == 1:
-            return bytes([1]) + scalars([cx, cy, s, s / 2, 3.0, 4.0], dbl)
-        # A square with dyadic corners: sides (s, s/2) and (-s/2, s).
-        h = s / 2
-        pts = [(cx - h, cy - h), (cx - h + s, cy - h + h), (cx - h + s - h, cy - h + h + s), (cx - h - h, cy - h + s)]
-        return bytes([2]) + scalars([c for p in pts for c in p], dbl)
-    if kind == "capsule":
-        return scalars([cx - s / 2, cy, cx + s / 2, cy, s / 2], dbl)
-    if kind == "polygon":
-        n = 5 + form * 4  # 5 or 9 vertices (9 leaves the inline storage)
-        pts = []
-        for i in range(n):
-            a = 2 * math.pi * i / n
-            pts += [cx + s * round(math.cos(a) * 64) / 64, cy + s * round(math.sin(a) * 64) / 64]
-        head = n | (0x80 if form == 2 else 0)
-        return bytes([head]) + scalars(pts, dbl)
-    if kind == "compound":
-        kids = kind_byte("circle", PRIMITIVES) + payload("circle", cx - s / 2, cy, s / 2, dbl)
-        kids += kind_byte("aabb", PRIMITIVES) + payload("aabb", cx + s / 2, cy, s / 2, dbl)
-        return bytes([2]) + kids
-    sys.exit(f"make_corpus: no encoder for kind '{kind}' (added to the registry?)")
-
-
-def shape(kind, cx, cy, size, dbl, form=0):
-    return kind_byte(kind) + payload(kind, cx, cy, size, dbl, form)
-
-
-def pair_inputs(extra=b"", flags_extra=0):
+def pair_inputs(codecs, extra=None, flags_extra=0):
     """(name, bytes) for every unordered pair of kinds, both scalars, three placements."""
     out = []
-    for i, j in itertools.combinations_with_replacement(range(len(KINDS)), 2):
-        a, b = KINDS[i], KINDS[j]
+    for a, b in itertools.combinations_with_replacement(codecs.names, 2):
         for dbl in (False, True):
             for place, dx in (("overlap", 0.75), ("touch", 2.0), ("apart", 3.5)):
-                form = (i + j) % 3
-                data = bytes([int(dbl) | flags_extra]) + shape(a, 0, 0, 1, dbl, form) + shape(b, dx, 0.25 if place == "apart" else 0, 1, dbl, form)
-                out.append((f"{a}_{b}-{'double' if dbl else 'float'}-{place}", data + extra(dbl) if callable(extra) else data))
+                data = (bytes([int(dbl) | flags_extra]) + codecs.shape(a, 0, 0, 1, dbl)
+                        + codecs.shape(b, dx, 0.25 if place == "apart" else 0, 1, dbl))
+                out.append((f"{a}_{b}-{'double' if dbl else 'float'}-{place}", data + (extra(dbl) if extra else b"")))
     return out
 
 
@@ -103,32 +94,53 @@ def ray(dbl):
     return scalars([-4.0, 0.125, 1.0, 0.0, 16.0], dbl)
 
 
-def shapes_from_bytes_inputs():
+def rejected_values(codecs, kind):
+    """(name, values) that a kind's rules reject, derived from the fields' roles: a negative size,
+    the first two x values exchanged (min > max), all 'other' values zero (a zero axis); for
+    vertices, two points (too few) and three on a line (collinear)."""
+    k = codecs.kinds[kind]
+    base = codecs.placed(kind, 1, -2, 1.5)
+    roles = [k["fields"][i % len(k["fields"])]["role"] for i in range(len(base))]
+    out = []
+    for i, role in enumerate(roles):
+        if role == "size":
+            out.append((f"negative-{k['fields'][i % len(k['fields'])]['name']}", base[:i] + [-1.0] + base[i + 1:]))
+    xs = [i for i, role in enumerate(roles) if role == "x"]
+    if k["layout"] == "fixed" and len(xs) >= 2 and base[xs[0]] != base[xs[1]]:
+        v = list(base)
+        v[xs[0]], v[xs[1]] = v[xs[1]], v[xs[0]]
+        out.append(("x-exchanged", v))
+    if "other" in roles:
+        out.append(("other-zero", [0.0 if role == "other" else v for v, role in zip(base, roles)]))
+    if k["layout"] == "vertices":
+        out.append(("two", [0, 0, 1, 1]))
+        out.append(("collinear", [0, 0, 1, 1, 2, 2]))
+    return out
+
+
+def shapes_from_bytes_inputs(codecs):
     out = []
     specials = [float("nan"), float("inf"), -float("inf"), 1e38, -1e38, 5e-324, 1e-45, 0.0, -0.0, 2.0 ** 126]
     for dbl in (False, True):
         tag = "double" if dbl else "float"
-        for kind in KINDS:
-            forms = (0, 1, 2) if kind in ("obb", "polygon") else (0,)
-            for form in forms:
-                out.append((f"{kind}{form}-{tag}-valid", bytes([int(dbl)]) + shape(kind, 1, -2, 1.5, dbl, form)))
-        for k, v in enumerate(specials):
+        flags = bytes([int(dbl)])
+        for kind in codecs.names:
+            out.append((f"{kind}-{tag}-valid", flags + codecs.shape(kind, 1, -2, 1.5, dbl)))
+            for name, values in rejected_values(codecs, kind):
+                out.append((f"{kind}-{tag}-{name}", flags + codecs.encode(kind, values, dbl)))
+            if codecs.kinds[kind]["layout"] == "children":
+                out.append((f"{kind}-{tag}-empty", flags + codecs.encode(kind, [], dbl)))
+        for n, v in enumerate(specials):
             if not dbl and v == 5e-324:
                 continue
-            kind = KINDS[k % len(KINDS)]
-            base = bytearray(bytes([int(dbl)]) + shape(kind, 1, -2, 1.5, dbl))
+            kind = codecs.names[n % len(codecs.names)]
+            base = bytearray(flags + codecs.shape(kind, 1, -2, 1.5, dbl))
             w = 8 if dbl else 4
-            pos = 2 + (1 if kind in ("obb", "polygon", "compound") else 0) + (1 if kind == "compound" else 0)
+            pos = 1 + codecs.first_value_offset(kind)
+            if codecs.kinds[kind]["layout"] == "children":
+                pos += 1  # the first child's kind byte
             base[pos:pos + w] = scalar(v, dbl)
-            out.append((f"{kind}-{tag}-special{k}", bytes(base)))
-        # Rejections by name: negative radius, min > max, too few vertices, collinear, empty compound.
-        out.append((f"circle-{tag}-negative", bytes([int(dbl)]) + kind_byte("circle") + scalars([0, 0, -1], dbl)))
-        out.append((f"aabb-{tag}-inverted", bytes([int(dbl)]) + kind_byte("aabb") + scalars([1, 0, 0, 1], dbl)))
-        out.append((f"polygon-{tag}-two", bytes([int(dbl)]) + kind_byte("polygon") + bytes([2]) + scalars([0, 0, 1, 1], dbl)))
-        out.append((f"polygon-{tag}-collinear", bytes([int(dbl)]) + kind_byte("polygon") + bytes([3]) + scalars([0, 0, 1, 1, 2, 2], dbl)))
-        out.append((f"polygon-{tag}-reflex", bytes([int(dbl)]) + kind_byte("polygon") + bytes([4]) + scalars([0, 0, 2, 0, 1, 0.5, 1, 2], dbl)))
-        out.append((f"compound-{tag}-empty", bytes([int(dbl)]) + kind_byte("compound") + bytes([0])))
-        out.append((f"obb-{tag}-zeroaxis", bytes([int(dbl)]) + kind_byte("obb") + bytes([1]) + scalars([0, 0, 1, 1, 0, 0], dbl)))
+            out.append((f"{kind}-{tag}-special{n}", bytes(base)))
     return out
 
 
@@ -151,33 +163,43 @@ def broadphase_inputs():
             ops += bytes([6])  # pairs any
             flags = int(dbl) | (structure << 1)
             out.append((f"{['tree', 'sweep', 'grid'][structure]}-{tag}", bytes([flags]) + scalar(param, dbl) + ops))
-            bad = bytes([flags]) + scalar(param, dbl) + bytes([0]) + scalars([1, 0, 0, 1], dbl) + bytes([4]) + scalars([0, 0, float("nan"), 0, 1], dbl)
+            bad = (bytes([flags]) + scalar(param, dbl) + bytes([0]) + scalars([1, 0, 0, 1], dbl) + bytes([4])
+                   + scalars([0, 0, float("nan"), 0, 1], dbl))
             out.append((f"{['tree', 'sweep', 'grid'][structure]}-{tag}-invalid", bad))
     return out
 
 
+TARGETS = ["overlap_oracle", "resolve", "contact_raycast", "shapes_from_bytes", "broadphase"]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build-dir", default="build/ci")
     ap.add_argument("--out", default=str(ROOT / "fuzz/corpus"))
-    ap.add_argument("--drop-failing", metavar="BUILD_DIR", help="leave out seeds that fail this build's replay")
+    ap.add_argument("--drop-failing", action="store_true", help="leave out seeds that fail this build's replay")
     args = ap.parse_args()
+    build = collide_tools.build_dir(args.build_dir)
+    codecs = Codecs(collide_tools.describe(build))
+    if args.drop_failing:
+        collide_tools.build_targets(build, [f"fuzz_replay_{t}" for t in TARGETS], quiet=True)
 
     def passes(target, data):
         if not args.drop_failing:
             return True
-        exe = pathlib.Path(args.drop_failing) / "fuzz" / f"fuzz_replay_{target}"
+        exe = build / "fuzz" / f"fuzz_replay_{target}"
         with tempfile.NamedTemporaryFile() as f:
             f.write(data)
             f.flush()
             return subprocess.run([str(exe), f.name], capture_output=True).returncode == 0
 
     sets = {
-        "overlap_oracle": pair_inputs(),
-        "resolve": pair_inputs(flags_extra=2) + pair_inputs()[::7],
-        "contact_raycast": pair_inputs(extra=ray),
-        "shapes_from_bytes": shapes_from_bytes_inputs(),
+        "overlap_oracle": pair_inputs(codecs),
+        "resolve": pair_inputs(codecs, flags_extra=2) + pair_inputs(codecs)[::7],
+        "contact_raycast": pair_inputs(codecs, extra=ray),
+        "shapes_from_bytes": shapes_from_bytes_inputs(codecs),
         "broadphase": broadphase_inputs(),
     }
+    assert sorted(sets) == sorted(TARGETS)
     for target, items in sets.items():
         d = pathlib.Path(args.out) / target
         d.mkdir(parents=True, exist_ok=True)

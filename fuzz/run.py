@@ -39,7 +39,9 @@ import sys
 import threading
 import time
 
-from cmake_cache import cache_value
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "scripts"))
+from collide_tools import build_targets, cache_value, fnv1a, write_report  # noqa: E402
+
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s:? (\d+)")
@@ -51,8 +53,6 @@ STOP_GRACE_S = 30
 
 def log(msg):
     print(msg, flush=True)
-
-
 
 
 def choose_build_dir(arg, no_sanitizers):
@@ -77,17 +77,15 @@ def configure_and_build(build, targets, jobs, no_sanitizers):
     available = (cache_value(build, "COLLIDE_FUZZ_TARGETS") or "").split(";")
     available = [t for t in available if t]
     if not available:
-        log("fuzz/run.py: no fuzz targets configured (is collide::laws built?)")
+        log(f"fuzz/run.py: {build} lists no fuzz targets (COLLIDE_FUZZ_TARGETS)")
         return None
     chosen = targets or available
     unknown = [t for t in chosen if t not in available]
     if unknown:
         log(f"fuzz/run.py: unknown target(s) {unknown}; available: {available}")
         return None
-    cmd = ["cmake", "--build", str(build), "-j", str(jobs), "--target"] + [f"fuzz_{t}" for t in chosen]
-    log("build: " + " ".join(cmd))
-    if subprocess.run(cmd, cwd=ROOT).returncode != 0:
-        return None
+    log(f"build: {', '.join(f'fuzz_{t}' for t in chosen)} in {build}")
+    build_targets(build, [f"fuzz_{t}" for t in chosen], jobs)
     return chosen
 
 
@@ -262,7 +260,7 @@ def merge(binary, target, work, places):
     seeds = places.corpus / target
     before = {p.name for p in seeds.iterdir()}
     r = shielded([str(binary), "-merge=1", "-max_len=4096", "-timeout=20", "-rss_limit_mb=2560", str(seeds),
-                        str(work / "new")], cwd=work, capture_output=True, text=True, errors="replace")
+                  str(work / "new")], cwd=work, capture_output=True, text=True, errors="replace")
     after = {p.name for p in seeds.iterdir()}
     if r.returncode != 0:
         log(f"  merge of {target} exited with {r.returncode} (corpus kept as merged so far)")
@@ -274,7 +272,7 @@ def signature(binary, artifact, work):
     sanitizer's summary line. One night can write thousands of artifacts of one bug; each bug is
     minimised and promoted once."""
     r = shielded([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(artifact)], cwd=work,
-                       capture_output=True, text=True, errors="replace")
+                 capture_output=True, text=True, errors="replace")
     lines = r.stderr.splitlines()
     head = next((ln for ln in lines if ln.startswith("== collide fuzz target")), None)
     if head:
@@ -304,7 +302,7 @@ def to_regression(binary, target, artifact, work, places):
     minimized = work / f"min-{art.name}"
     if kind == "crash":
         shielded([str(binary), "-minimize_crash=1", "-runs=3000", "-max_total_time=120",
-                        f"-exact_artifact_path={minimized}", str(art)], cwd=work, capture_output=True)
+                  f"-exact_artifact_path={minimized}", str(art)], cwd=work, capture_output=True)
     # libFuzzer's minimiser keeps any failing input, and a shorter input often fails another law:
     # keep the minimised input only when it still fails the same way.
     if minimized.exists() and signature(binary, minimized, work) != signature(binary, art, work):
@@ -315,7 +313,7 @@ def to_regression(binary, target, artifact, work, places):
     regressions.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, COLLIDE_FUZZ_CASE_DIR=str(regressions))
     r = shielded([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(minimized)], cwd=work, env=env,
-                       capture_output=True, text=True, errors="replace")
+                 capture_output=True, text=True, errors="replace")
     report = r.stderr
     entry = {"artifact": str(art), "kind": kind, "bytes": minimized.stat().st_size}
     m = CASE_RE.search(report) or RAW_RE.search(report)
@@ -328,10 +326,7 @@ def to_regression(binary, target, artifact, work, places):
     else:
         # A sanitizer report, a timeout or an out-of-memory: keep the raw input and the report.
         data = minimized.read_bytes()
-        h = 2166136261
-        for b in data:
-            h = ((h ^ b) * 16777619) & 0xFFFFFFFF
-        stem = regressions / f"{target}-{h:08x}"
+        stem = regressions / f"{target}-{fnv1a(data):08x}"
         stem.with_suffix(".input").write_bytes(data)
         stem.with_suffix(".txt").write_text(f"fuzz target {target} ({kind})\n" + report[-6000:])
         entry["case_file"] = shown(stem.with_suffix(".input"))
@@ -348,12 +343,15 @@ def write_reports(results, build, places, plan):
     doc = {"build_dir": str(build), "sanitizers": plan["sanitizers"], "jobs": plan["jobs"], "targets": results,
            "failures": sum(len(r["failures"]) for r in results),
            "interrupted": bool(unfinished), "unfinished_targets": unfinished}
-    (reports / "fuzz.json").write_text(json.dumps(doc, indent=2) + "\n")
+    write_report("fuzz", doc, reports / "fuzz.json")
+    flavour = ("executables as given" if plan["fuzzer_dir"] else "ASan + UBSan" if plan["sanitizers"]
+               else "no sanitizers")
     lines = ["# Fuzzing report", "",
              f"Build: `{shown(build)}` "
-             f"({'executables as given' if plan['fuzzer_dir'] else 'ASan + UBSan' if plan['sanitizers'] else 'no sanitizers'})"
+             f"({flavour})"
              f", fork workers per target: {plan['jobs']}.",
-             "", "| target | time (s) | executions | exec/s | coverage (edges / features) | corpus | new inputs | failures |",
+             "", "| target | time (s) | executions | exec/s | coverage (edges / features) | corpus | new inputs "
+             "| failures |",
              "|---|---:|---:|---:|---|---:|---:|---:|"]
     if unfinished:
         lines[2:2] = [f"**Interrupted**: {', '.join(unfinished)} not finished; `./harness fuzz --resume` "

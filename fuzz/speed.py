@@ -32,10 +32,12 @@ import subprocess
 import sys
 import time
 
-from make_corpus import KINDS, kind_byte, scalars
+from make_corpus import Codecs
 from run import configure_and_build
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "scripts"))
+import collide_tools  # noqa: E402
 GOALS = {"round": 500_000, "polygon": 100_000}
 COUNT = 2000
 
@@ -45,18 +47,18 @@ def f32(v):
     return struct.unpack("<f", struct.pack("<f", v))[0]
 
 
-def round_shape(rng, kind, cx, cy, size, dbl):
+def round_shape(codecs, rng, kind, cx, cy, size, dbl):
     if kind == "circle":
-        return kind_byte("circle") + scalars([cx, cy, size], dbl)
+        return codecs.encode("circle", [cx, cy, size], dbl)
     w = size * rng.uniform(0.5, 1.0)
-    return kind_byte("aabb") + scalars([cx - size, cy - w, cx + size, cy + w], dbl)
+    return codecs.encode("aabb", [cx - size, cy - w, cx + size, cy + w], dbl)
 
 
-def polygon_shape(rng, cx, cy, size, dbl):
+def polygon_shape(codecs, rng, cx, cy, size, dbl):
     n = rng.randint(3, 8)
     angles = sorted(rng.uniform(0, 2 * math.pi) for _ in range(n))
     pts = [v for a in angles for v in (cx + size * math.cos(a), cy + size * math.sin(a))]
-    return kind_byte("polygon") + bytes([n]) + scalars(pts, dbl)
+    return codecs.encode("polygon", pts, dbl)
 
 
 def placement(rng, reach):
@@ -69,7 +71,7 @@ def placement(rng, reach):
     return reach  # touching (exactly for circle and box pairs on an axis), else within rounding
 
 
-def inputs(cls, rng):
+def inputs(codecs, cls, rng):
     out = []
     for _ in range(COUNT):
         dbl = rng.random() < 0.5
@@ -84,11 +86,11 @@ def inputs(cls, rng):
                 dx, dy = d * math.cos(ang), d * math.sin(ang)
             else:
                 dx, dy = d, 0.0
-            data = round_shape(rng, a, cx, cy, s1, dbl) + round_shape(rng, b, cx + dx, cy + dy, s2, dbl)
+            data = round_shape(codecs, rng, a, cx, cy, s1, dbl) + round_shape(codecs, rng, b, cx + dx, cy + dy, s2, dbl)
         else:
             ang = rng.uniform(0, 2 * math.pi)
-            data = (polygon_shape(rng, cx, cy, s1, dbl) +
-                    polygon_shape(rng, cx + d * math.cos(ang), cy + d * math.sin(ang), s2, dbl))
+            data = (polygon_shape(codecs, rng, cx, cy, s1, dbl) +
+                    polygon_shape(codecs, rng, cx + d * math.cos(ang), cy + d * math.sin(ang), s2, dbl))
         out.append(bytes([int(dbl)]) + data)
     return out
 
@@ -130,13 +132,9 @@ def main():
     ap.add_argument("--repeat", type=int, default=50, help="replays of each class's inputs (default 50)")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
-    assert "circle" in KINDS and "aabb" in KINDS and "polygon" in KINDS
-
-    build = pathlib.Path(args.build_dir)
-    build = build if build.is_absolute() else ROOT / build
-    if subprocess.run(["cmake", "--build", str(build), "-j", str(args.jobs), "--target",
-                       "fuzz_replay_overlap_oracle"], cwd=ROOT).returncode != 0:
-        return 2
+    build = collide_tools.build_dir(args.build_dir)
+    codecs = Codecs(collide_tools.describe(build))
+    collide_tools.build_targets(build, ["fuzz_replay_overlap_oracle"], args.jobs)
     nosan = ROOT / "build/fuzz-nosan"
     if configure_and_build(nosan, ["overlap_oracle"], args.jobs, True) is None:
         return 2
@@ -147,7 +145,7 @@ def main():
         corpus = work / cls
         shutil.rmtree(corpus, ignore_errors=True)
         corpus.mkdir(parents=True)
-        for i, data in enumerate(inputs(cls, random.Random(f"{cls}-1"))):
+        for i, data in enumerate(inputs(codecs, cls, random.Random(f"{cls}-1"))):
             (corpus / f"{i:04d}.bin").write_bytes(data)
         target = target_rate(build / "fuzz/fuzz_replay_overlap_oracle", corpus, args.repeat)
         if target is None:
@@ -162,9 +160,11 @@ def main():
 
     reports = ROOT / "build/reports"
     reports.mkdir(parents=True, exist_ok=True)
-    (reports / "fuzz-speed.json").write_text(json.dumps({"target": "overlap_oracle", "classes": results}, indent=2) + "\n")
+    doc = {"target": "overlap_oracle", "classes": results}
+    (reports / "fuzz-speed.json").write_text(json.dumps(doc, indent=2) + "\n")
     lines = ["# overlap_oracle speed", "",
-             "| inputs | target alone (inputs/s) | libFuzzer, no sanitizers (exec/s) | goal (exec/s) | target / goal | libFuzzer / goal |",
+             "| inputs | target alone (inputs/s) | libFuzzer, no sanitizers (exec/s) | goal (exec/s) | target / goal "
+             "| libFuzzer / goal |",
              "|---|---:|---:|---:|---:|---:|"]
     for r in results:
         g = r["goal_exec_per_s"]

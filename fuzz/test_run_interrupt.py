@@ -95,7 +95,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         tmp = pathlib.Path(tmp)
         bins, corpus, regressions, runs, reports = (tmp / d for d in ("bin", "corpus", "regressions", "runs",
-                                                                       "reports"))
+                                                                      "reports"))
         bins.mkdir()
         for t in TARGETS:
             exe = bins / t
@@ -133,7 +133,8 @@ def main():
             written = [ln.split() for ln in ledger.read_text().splitlines()]
             missing = [f"{t}/{n}" for t, n in written if not (corpus / t / n).exists()]
             check.that(written and not missing,
-                       f"{when}: all {len(written)} inputs the fuzzers wrote are in the corpus (missing: {missing[:5]})")
+                       f"{when}: all {len(written)} inputs the fuzzers wrote are in the corpus "
+                       f"(missing: {missing[:5]})")
             kinds = sorted((p.name.split("-")[0], p.read_bytes()) for p in regressions.glob("*.input"))
             expected = sorted((t, k) for t in ran for k in (b"crash A", b"crash B"))
             check.that(kinds == expected, f"{when}: one regression input per target and kind of failure "

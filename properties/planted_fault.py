@@ -1,25 +1,31 @@
 #!/usr/bin/env python3
-"""The planted-fault check: the property suite built with COLLIDE_PLANTED_FAULT (the course notes'
-AABB slip `b.max.y < a.min.x` in decide.hpp) must FAIL on the pairs that involve an AABB.
+"""The planted-fault check: the property suite built against the planted fault aabb-slip
+(scripts/planted_faults.txt: the course notes' slip `b.max.y < a.min.x` in decide.hpp) must FAIL
+on the pairs that involve an AABB.
 
-Runs each law family on the aabb pairs (and compounds, whose bounding-box early-out uses the AABB
-test) and prints whether it caught the fault. Passes only if every family that can see the fault
-caught it. Counterexamples go to CASES_DIR (never into tests/regressions).
+Runs each law of the build's law table (collide_describe) on the aabb pairs (and compounds, whose
+bounding-box early-out uses the AABB test) and prints whether it caught the fault. Passes only if
+every law that can see the fault caught it. Counterexamples go to CASES_DIR (never into
+tests/regressions).
 
-usage: planted_fault.py SUITE_EXECUTABLE CASES_DIR
+usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR
 """
 
+import json
 import os
+import pathlib
 import subprocess
 import sys
 
-# Families that compare overlaps() with something independent of aabb_aabb (the oracle, the other
-# argument order, a moved/turned/re-represented pair, the children, the distance): each must see it.
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "scripts"))
+import collide_tools  # noqa: E402
+
+# Laws that compare overlaps() with something independent of aabb_aabb (the oracle, the other
+# argument order, a moved/turned/re-represented pair, the children, the distance): each must see
+# it. The other laws check other things (contact consistency with overlaps(), bounds, bad input):
+# reported, not required.
 MUST_CATCH = ["agreement", "symmetry", "translation", "rotation", "resolution", "hierarchy",
               "representation", "distance"]
-# Families that check other things (contact consistency with overlaps(), bounds, bad input):
-# reported, not required.
-MAY_CATCH = ["contact", "bounds", "raycast", "rejection", "contains", "touching", "scene"]
 
 
 def run(exe, law, cases_dir):
@@ -27,29 +33,34 @@ def run(exe, law, cases_dir):
     env["RC_PARAMS"] = "max_success=300 max_size=100 noshrink=1 seed=1"
     env["COLLIDE_CASES_DIR"] = cases_dir
     env.pop("COLLIDE_PROPS_REPORT", None)
-    proc = subprocess.run([exe, f"--gtest_filter={law}.*aabb*:{law}.compound_compound*"], env=env,
-                          capture_output=True, text=True, timeout=600)
-    failed = [line.split()[3] for line in proc.stdout.splitlines()
-              if line.startswith("[  FAILED  ]") and len(line.split()) > 3 and "." in line.split()[3]]
-    return proc.returncode != 0, sorted(set(failed))
+    proc, report = collide_tools.run_gtest([exe, f"--gtest_filter={law}.*aabb*:{law}.compound_compound*"], env=env,
+                                           capture_output=True, text=True, timeout=600)
+    return proc.returncode != 0, collide_tools.gtest_failures(report)
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) != 4:
         print(__doc__)
         return 2
-    exe, cases_dir = sys.argv[1], sys.argv[2]
+    exe, describe, cases_dir = sys.argv[1:]
+    laws = [law["name"] for law in json.loads(subprocess.run([describe, "--laws"], capture_output=True,
+                                                             text=True, check=True).stdout)]
+    unknown = [law for law in MUST_CATCH if law not in laws]
+    if unknown:
+        print(f"planted_fault.py: {', '.join(unknown)} not in the law table")
+        return 2
     os.makedirs(cases_dir, exist_ok=True)
     ok = True
-    print(f"{'law':16} {'caught':7} failing tests")
-    for law in MUST_CATCH + MAY_CATCH:
+    rows = []
+    for law in MUST_CATCH + [law for law in laws if law not in MUST_CATCH]:
         caught, tests = run(exe, law, cases_dir)
         required = law in MUST_CATCH
         mark = "yes" if caught else ("NO" if required else "no")
-        print(f"{law:16} {mark:7} {', '.join(tests[:6])}{' ...' if len(tests) > 6 else ''}")
+        rows.append([law, mark, ", ".join(tests[:6]) + (" ..." if len(tests) > 6 else "")])
         if required and not caught:
             ok = False
-    print("planted fault", "CAUGHT by every family that can see it" if ok else "MISSED by a family that should see it")
+    collide_tools.print_table(["law", "caught", "failing tests"], rows)
+    print("planted fault", "CAUGHT by every law that can see it" if ok else "MISSED by a law that should see it")
     return 0 if ok else 1
 
 

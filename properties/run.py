@@ -8,14 +8,14 @@ usage: properties/run.py [--build-dir D] [--cases N] [--seed S] [--pair P] [--la
              at 100). Without it, --minutes picks N from a short calibration run (default 100).
 --seed S     RapidCheck seed (default: chosen here and printed, so a run can be repeated).
 --pair P     one pair, e.g. circle_obb (either order), or a kind for the single-shape laws.
---law L      one law family (agreement, symmetry, translation, rotation, resolution, bounds,
-             raycast, hierarchy, representation, contact, distance, rejection, contains, touching, scene).
+--law L      one law of the build's law table (collide_describe --laws).
 --minutes M  time budget for the whole run (default 3).
 
 Prints a table (cases, relation distribution, disagreements allowed within the tolerance band
 against each test's ceiling, status) and writes it as JSON to build/reports/properties.json, and
-keeps every run as build/reports/properties-runs/properties-<time>-seed<S>.json (+ latest.json). A counterexample is written by the suite itself as a case file
-(+ SVG) under tests/regressions/; the paths are listed here. Exit status 1 if any test failed.
+keeps every run as build/reports/properties-runs/properties-<time>-seed<S>.json (+ latest.json). A
+counterexample is written by the suite itself as a case file (+ SVG) under tests/regressions/; the
+paths are listed here. Exit status 1 if any test failed.
 """
 
 from __future__ import annotations
@@ -31,17 +31,17 @@ import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-KINDS = ["circle", "aabb", "obb", "capsule", "polygon", "compound"]
-LAWS = ["agreement", "symmetry", "translation", "rotation", "resolution", "bounds", "raycast", "hierarchy",
-        "representation", "contact", "distance", "rejection", "contains", "touching", "scene"]
+sys.path.insert(0, str(ROOT / "scripts"))
+import collide_tools  # noqa: E402
+
 RELATIONS = ["separated", "touching", "overlapping", "contained"]
 
 
-def canonical_pair(p: str) -> str:
-    if p in KINDS:
+def canonical_pair(p: str, kinds: list[str]) -> str:
+    if p in kinds:
         return p
-    for i, a in enumerate(KINDS):
-        for b in KINDS[i:]:
+    for i, a in enumerate(kinds):
+        for b in kinds[i:]:
             if p in (f"{a}_{b}", f"{b}_{a}"):
                 return f"{a}_{b}"
     sys.exit(f"run.py: unknown pair '{p}'")
@@ -53,9 +53,10 @@ def gtest_filter(laws: list[str], pair: str | None) -> str:
 
 
 def run_suite(exe: pathlib.Path, laws: list[str], pair: str | None, cases: int, seed: int, jobs: int,
-              report: pathlib.Path, cases_dir: pathlib.Path | None = None) -> tuple[int, str]:
-    """Runs the laws split over `jobs` processes; returns (worst exit status, combined output).
-    Counterexamples go to cases_dir (default: the suite's own, tests/regressions)."""
+              report: pathlib.Path, cases_dir: pathlib.Path | None = None) -> tuple[int, str, list[str]]:
+    """Runs the laws split over `jobs` processes; returns (worst exit status, combined output,
+    failed tests from GoogleTest's JSON reports). Counterexamples go to cases_dir (default: the
+    suite's own, tests/regressions)."""
     groups = [laws[i::jobs] for i in range(jobs)] if len(laws) >= jobs else [laws]
     env = dict(os.environ)
     env["RC_PARAMS"] = f"max_success={cases} max_size=100 seed={seed}"
@@ -63,17 +64,20 @@ def run_suite(exe: pathlib.Path, laws: list[str], pair: str | None, cases: int, 
     if cases_dir is not None:
         env["COLLIDE_CASES_DIR"] = str(cases_dir)
     procs = []
-    for g in groups:
-        if not g:
-            continue
-        procs.append(subprocess.Popen([str(exe), f"--gtest_filter={gtest_filter(g, pair)}"], env=env,
-                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True))
-    status, output = 0, []
-    for p in procs:
-        out, _ = p.communicate()
-        output.append(out)
-        status = max(status, p.returncode)
-    return status, "\n".join(output)
+    with tempfile.TemporaryDirectory() as tmp:
+        for n, g in enumerate(g for g in groups if g):
+            json_out = pathlib.Path(tmp) / f"gtest-{n}.json"
+            procs.append((json_out, subprocess.Popen([str(exe), f"--gtest_filter={gtest_filter(g, pair)}",
+                                                      f"--gtest_output=json:{json_out}"], env=env,
+                                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)))
+        status, output, failed = 0, [], []
+        for json_out, p in procs:
+            out, _ = p.communicate()
+            output.append(out)
+            status = max(status, p.returncode)
+            if json_out.exists():
+                failed += collide_tools.gtest_failures(json.loads(json_out.read_text()))
+    return status, "\n".join(output), failed
 
 
 def main() -> int:
@@ -82,23 +86,22 @@ def main() -> int:
     ap.add_argument("--cases", type=int)
     ap.add_argument("--seed", type=int)
     ap.add_argument("--pair")
-    ap.add_argument("--law", choices=LAWS)
+    ap.add_argument("--law")
     ap.add_argument("--minutes", type=float, default=3.0)
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
 
-    build = pathlib.Path(args.build_dir)
-    if not build.is_absolute():
-        build = ROOT / build
+    build = collide_tools.build_dir(args.build_dir)
     exe = build / "properties" / "collide_properties"
-    # Always build: a stale suite would judge yesterday's library (ninja does nothing when current).
-    if subprocess.run(["cmake", "--build", str(build), "--target", "collide_properties", "-j2"],
-                      stdout=subprocess.DEVNULL).returncode:
-        print(f"run.py: cannot build {exe}", file=sys.stderr)
-        return 2
+    collide_tools.build_targets(build, ["collide_properties"], quiet=True)
+    described = collide_tools.describe(build)
+    all_laws = [law["name"] for law in described["laws"]]
+    relation_laws = {law["name"] for law in described["laws"] if law["inputs"] == "pair"}
+    if args.law and args.law not in all_laws:
+        ap.error(f"--law: unknown law '{args.law}' (the law table: {', '.join(all_laws)})")
     seed = args.seed if args.seed is not None else random.randrange(1, 2**31)
-    laws = [args.law] if args.law else LAWS
-    pair = canonical_pair(args.pair) if args.pair else None
+    laws = [args.law] if args.law else all_laws
+    pair = canonical_pair(args.pair, collide_tools.kind_names(build)) if args.pair else None
 
     with tempfile.TemporaryDirectory() as tmp:
         cases = args.cases
@@ -114,12 +117,10 @@ def main() -> int:
                   f"for a {args.minutes:g} minute budget")
         report = pathlib.Path(tmp) / "report.jsonl"
         t0 = time.monotonic()
-        status, output = run_suite(exe, laws, pair, cases, seed, args.jobs, report)
+        status, output, failed_tests = run_suite(exe, laws, pair, cases, seed, args.jobs, report)
         seconds = time.monotonic() - t0
         records = [json.loads(line) for line in report.read_text().splitlines()] if report.exists() else []
 
-    failed_tests = sorted({line.split()[3] for line in output.splitlines()
-                           if line.startswith("[  FAILED  ]") and len(line.split()) > 3 and "." in line.split()[3]})
     rows = []
     for r in records:
         name = f"{r['law']}.{r['pair']}_{r['scalar']}"
@@ -133,15 +134,17 @@ def main() -> int:
                                 "too few cases of a relation, or disagreements above the ceiling") if failed else "",
                      "case_file": r.get("case_file", "")})
     total = sum(r["cases"] for r in rows)
-    print(f"\n{'law':15} {'pair':19} {'scalar':6} {'cases':>6}  {'sep':>4} {'tch':>4} {'ovl':>4} {'cnt':>4}  "
-          f"{'allowed (within the tolerance band) / ceiling':>22}  status")
+    table = []
     for r in rows:
         d = r["distribution"]
         n = max(r["cases"], 1)
-        pct = [f"{100 * d[k] / n:3.0f}%" if r["law"] not in ("bounds", "raycast", "rejection", "contains", "scene") else "   -" for k in RELATIONS]
-        band = f"{r['disagreements']} / {r['disagreement_ceiling']}"
-        print(f"{r['law']:15} {r['pair']:19} {r['scalar']:6} {r['cases']:6}  {' '.join(pct)}  {band:>45}"
-              f"  {r['status'].upper()} {r['reason']}")
+        pct = [f"{100 * d[k] / n:.0f}%" if r["law"] in relation_laws else "-" for k in RELATIONS]
+        table.append([r["law"], r["pair"], r["scalar"], r["cases"], *pct,
+                      f"{r['disagreements']} / {r['disagreement_ceiling']}", f"{r['status'].upper()} {r['reason']}"])
+    print()
+    collide_tools.print_table(["law", "pair", "scalar", "cases", "sep", "tch", "ovl", "cnt",
+                               "allowed (within the tolerance band) / ceiling", "status"], table,
+                              right={3, 4, 5, 6, 7, 8})
     cases_per_second = total / seconds if seconds > 0 else 0.0
     disagreements = sum(r["disagreements"] for r in rows)
     n_failed = sum(r["status"] == "fail" for r in rows) + (1 if status and not rows else 0)
@@ -162,11 +165,9 @@ def main() -> int:
                "disagreements": disagreements, "failures": n_failed, "counterexamples": saved,
                "rc_params": f"max_success={cases} max_size=100 seed={seed}", "properties": rows}
     # Each run is kept (timestamped); properties.json and properties-runs/latest.json are this one.
-    text = json.dumps(summary, indent=1) + "\n"
     stamp = time.strftime("%Y%m%d-%H%M%S")
-    (runs / f"properties-{stamp}-seed{seed}.json").write_text(text)
-    (runs / "latest.json").write_text(text)
-    (reports / "properties.json").write_text(text)
+    collide_tools.write_report("properties", summary, runs / f"properties-{stamp}-seed{seed}.json",
+                               runs / "latest.json", reports / "properties.json")
     print(f"report: {reports / 'properties.json'} (kept as {runs / f'properties-{stamp}-seed{seed}.json'})")
     return 1 if (n_failed or status) else 0
 

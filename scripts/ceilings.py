@@ -18,7 +18,9 @@ import pathlib
 import subprocess
 import tempfile
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import collide_tools
+
+ROOT = collide_tools.ROOT
 
 
 def main() -> int:
@@ -27,8 +29,9 @@ def main() -> int:
     ap.add_argument("--cases", type=int, default=1000)
     ap.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
     args = ap.parse_args()
-    exe = ROOT / args.build_dir / "properties" / "collide_properties"
-    subprocess.run(["cmake", "--build", str(ROOT / args.build_dir), "--target", "collide_properties"], check=True)
+    build = collide_tools.build_dir(args.build_dir)
+    exe = build / "properties" / "collide_properties"
+    collide_tools.build_targets(build, ["collide_properties"])
     rate: dict[tuple[str, str, str], float] = collections.defaultdict(float)
     with tempfile.TemporaryDirectory() as tmp:
         for seed in args.seeds:

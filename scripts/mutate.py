@@ -20,6 +20,13 @@ the replays within --goal seconds; 2 when the list does not apply (a mutant's or
 missing or ambiguous), naming each such mutant.
 
 usage: scripts/mutate.py [--build-dir build/mutation] [--only NAME...] [--jobs 2] [--check]
+       scripts/mutate.py --planted NAME --out DIR    (the build's planted faults, see below)
+       scripts/mutate.py --planted NAME --print-path
+
+The planted faults of scripts/planted_faults.txt use the same format and checks; --planted writes
+one of them plainly into a copy of its header under DIR (DIR/collide/...), which the build puts
+before lib/include for the planted-fault test targets; --print-path prints that header's path
+relative to DIR. --check checks both lists.
 """
 
 from __future__ import annotations
@@ -28,7 +35,6 @@ import argparse
 import concurrent.futures
 import dataclasses
 import datetime
-import json
 import os
 import pathlib
 import re
@@ -38,8 +44,11 @@ import sys
 import tempfile
 import time
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import collide_tools
+
+ROOT = collide_tools.ROOT
 LIST = ROOT / "scripts" / "mutants.txt"
+PLANTED = ROOT / "scripts" / "planted_faults.txt"
 LAYERS = ("properties", "replays", "unit")
 PROPS_PARAMS = "max_success=200 max_size=100 seed=1 noshrink=1"
 TIMEOUT = 120  # seconds per layer and mutant: beyond it the layer counts as hung (killed, flagged)
@@ -147,6 +156,18 @@ def patch_sources(mutants: list[Mutant], src: pathlib.Path) -> dict[str, str]:
     return patched
 
 
+def planted_header(name: str) -> tuple[str, str]:
+    """(path relative to lib/include, patched text) of the planted fault `name`."""
+    faults = {mu.name: mu for mu in parse_list(PLANTED)}
+    if name not in faults:
+        raise ListError(f"no planted fault named {name} in {PLANTED.name} (known: {', '.join(sorted(faults))})")
+    mu = faults[name]
+    text = (ROOT / mu.path).read_text()
+    if text.count(mu.original) != 1:
+        raise ListError(f"[{mu.name}] {mu.path}: original text found {text.count(mu.original)} times (need exactly 1)")
+    return mu.path.removeprefix("lib/include/"), text.replace(mu.original, mu.mutated)
+
+
 def write_if_changed(path: pathlib.Path, text: str) -> None:
     if path.exists() and path.read_text() == text:
         return
@@ -232,13 +253,17 @@ def run_layer(commands: list[list[str]], mutant: int, cases_dir: str) -> dict:
     env.pop("COLLIDE_PROPS_REPORT", None)
     start = time.monotonic()
     for index, cmd in enumerate(commands):
+        gtest = "--gtest_fail_fast" in cmd
         try:
-            proc = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
+            if gtest:
+                proc, report = collide_tools.run_gtest(cmd, env=env, capture_output=True, text=True, timeout=TIMEOUT)
+            else:
+                proc, report = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=TIMEOUT), {}
         except subprocess.TimeoutExpired:
             return {"killed": True, "seconds": round(time.monotonic() - start, 2),
                     "by": f"{pathlib.Path(cmd[0]).name}: no answer within {TIMEOUT} s", "index": index}
         if proc.returncode != 0:
-            failed = re.findall(r"^\[  FAILED  \] (\S+\.\S+) \(", proc.stdout, re.M)
+            failed = collide_tools.gtest_failures(report)
             first_fail = re.search(r"^FAIL (\S+)", proc.stdout, re.M)
             what = failed[0] if failed else first_fail.group(1) if first_fail else f"exit status {proc.returncode}"
             return {"killed": True, "seconds": round(time.monotonic() - start, 2),
@@ -253,16 +278,31 @@ def main() -> int:
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("COLLIDE_JOBS", "2")))
     ap.add_argument("--goal", type=float, default=10.0, help="seconds of checks within which each mutant must die")
     ap.add_argument("--check", action="store_true", help="only check that every mutant applies, then stop")
+    ap.add_argument("--planted", metavar="NAME", help="write the planted fault NAME (with --out) or its path")
+    ap.add_argument("--out", metavar="DIR", help="with --planted: the include directory to write into")
+    ap.add_argument("--print-path", action="store_true", help="with --planted: print the header's path in DIR")
     args = ap.parse_args()
 
     try:
+        if args.planted:
+            rel, text = planted_header(args.planted)
+            if args.print_path:
+                print(rel)
+            elif args.out:
+                write_if_changed(pathlib.Path(args.out) / rel, text)
+            else:
+                raise ListError("--planted needs --out DIR or --print-path")
+            return 0
         mutants = parse_list(LIST)
         patched = patch_sources(mutants, ROOT)
+        planted = parse_list(PLANTED)
+        for mu in planted:
+            planted_header(mu.name)
     except ListError as e:
         print(f"mutate: {e}", file=sys.stderr)
         return 2
     files = sorted({mu.path for mu in mutants})
-    print(f"mutate: {len(mutants)} mutants over {len(files)} files of lib/")
+    print(f"mutate: {len(mutants)} mutants over {len(files)} files of lib/; {len(planted)} planted faults apply")
     if args.check:
         return 0
     build = pathlib.Path(args.build_dir)
@@ -285,10 +325,10 @@ def main() -> int:
             cmd = layers[layer][result["index"]]
             if result.get("failed_tests"):
                 # Find every failing test (fail-fast stops at the first), then filter them out.
-                full = subprocess.run([cmd[0]], capture_output=True, text=True,
-                                      env=dict(os.environ, COLLIDE_MUTANT="0", RC_PARAMS=PROPS_PARAMS,
-                                               COLLIDE_CASES_DIR=cases))
-                bad = sorted(set(re.findall(r"^\[  FAILED  \] (\S+\.\S+) \(", full.stdout, re.M)))
+                _, full = collide_tools.run_gtest([cmd[0]], capture_output=True, text=True,
+                                                  env=dict(os.environ, COLLIDE_MUTANT="0", RC_PARAMS=PROPS_PARAMS,
+                                                           COLLIDE_CASES_DIR=cases))
+                bad = sorted(set(collide_tools.gtest_failures(full)))
                 excluded += [f"{layer} {pathlib.Path(cmd[0]).name} {t}" for t in bad]
                 cmd.append("--gtest_filter=-" + ":".join(bad))
                 if run_layer([cmd], 0, cases)["killed"]:
@@ -338,8 +378,8 @@ def main() -> int:
     for r in rows:
         cells = [f"{r[layer]['seconds']:.1f} s ({r[layer]['by'].split(': ', 1)[-1]})" if r[layer]["killed"]
                  else "**alive**" for layer in LAYERS]
-        md.append(f"| {r['number']} | {r['name']}: {r['description']} | {r['file'].replace('lib/include/collide/', '')} | "
-                  + " | ".join(cells) + " |")
+        short = r["file"].replace("lib/include/collide/", "")
+        md.append(f"| {r['number']} | {r['name']}: {r['description']} | {short} | " + " | ".join(cells) + " |")
     md += ["", f"Killed: properties {score['properties']}/{len(rows)}, replays {score['replays']}/{len(rows)}, "
                f"unit {score['unit']}/{len(rows)}; by properties or replays within {args.goal:g} s: "
                f"{goal_met}/{len(rows)}."]
@@ -349,9 +389,9 @@ def main() -> int:
     runs = reports / "mutation-runs"
     runs.mkdir(parents=True, exist_ok=True)
     stamp = f"{when:%Y%m%d-%H%M%S}"
-    for ext, text in (("json", json.dumps(report, indent=1) + "\n"), ("md", "\n".join(md) + "\n")):
-        (reports / f"mutation.{ext}").write_text(text)
-        (runs / f"mutation-{stamp}.{ext}").write_text(text)
+    collide_tools.write_report("mutation", report, reports / "mutation.json", runs / f"mutation-{stamp}.json")
+    for path in (reports / "mutation.md", runs / f"mutation-{stamp}.md"):
+        path.write_text("\n".join(md) + "\n")
     print("\n".join(md[-3:]))
     print(f"report: {reports / 'mutation.md'} (and mutation.json; this run also in {runs})")
     return 0 if goal_met == len(rows) else 1

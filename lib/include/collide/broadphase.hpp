@@ -33,24 +33,10 @@
 #include "collide/broadphase/world.hpp"
 
 #include <algorithm>
-#include <concepts>
 #include <span>
 #include <vector>
 
 namespace collide::broadphase {
-
-/// What the three structures have in common.
-template <class B, class T>
-concept BroadphaseOf = requires(B b, const B cb, const Aabb<T>& box, ProxyId id) {
-  { b.add(box, std::uint64_t{}) } -> std::same_as<ProxyId>;
-  b.move(id, box);
-  b.remove(id);
-  { cb.contains(id) } -> std::same_as<bool>;
-  { cb.pairs(PairOrder::Sorted) } -> std::same_as<std::vector<ProxyPair>>;
-  cb.query(box, [](ProxyId) {});
-  cb.query(box, [](ProxyId) {}, Filter{});
-  cb.for_each_pair([](ProxyId, ProxyId) {});
-};
 
 /// Pairs with at least one proxy in `moved` (e.g. the proxies moved this step) whose filters
 /// accept each other, each once, a.index < b.index. Errors: InvalidProxy (any handle in moved).

@@ -17,7 +17,7 @@ template <Scalar U>
 Aabb<U> bounds_from_calc(const Vec2c& lo, const Vec2c& hi) noexcept {
   Vec2<U> out_lo, out_hi;
   for (int i = 0; i < 2; ++i) {
-    const Calc pad = 8 * 0x1p-53 * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + 0x1p-1074;
+    const Calc pad = 8 * kUnitRoundoff * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + kSmallestDouble;
     const Calc l = lo[i] - pad, h = hi[i] + pad;
     U fl = static_cast<U>(l), fh = static_cast<U>(h);
     if (static_cast<Calc>(fl) > l) fl = std::nextafter(fl, -std::numeric_limits<U>::infinity());

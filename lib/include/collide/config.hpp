@@ -40,6 +40,23 @@ constexpr T max_magnitude() noexcept {
 /// Double's unit roundoff: the largest relative error of one rounded operation.
 inline constexpr Calc kUnitRoundoff = 0x1p-53;
 
+/// The smallest positive double (a subnormal): the absolute error of one rounded operation whose
+/// result underflows, which relative bounds (kUnitRoundoff) miss.
+inline constexpr Calc kSmallestDouble = 0x1p-1074;
+
+/// Broadphase ray queries: relative pad of the box around a ray segment, which bounds the
+/// rounding of its end point origin + direction * max_t (a few units of 2^-53) with a wide
+/// margin, so the box never misses a proxy the segment reaches; a looser box only adds candidates.
+inline constexpr Calc kRayBoxPad = 0x1p-40;
+
+/// Broadphase ray queries: absolute pad of that box, for segments at or near the origin.
+inline constexpr Calc kRayBoxPadFloor = 0x1p-1000;
+
+/// Sweep-and-prune queries: relative slack on the widest entry when choosing where a scan starts
+/// (start = lo.x - widest * (1 + slack), then one ulp lower), which covers the rounding of that
+/// subtraction with a wide margin; a lower start only scans more entries.
+inline constexpr Calc kSweepWidthSlack = 0x1p-40;
+
 /// Contact generation: two faces whose normalised alignment with the reference normal differs by
 /// less than this are equally anti-parallel (a polygon side split by a vertex one ulp off its line).
 inline constexpr Calc kFaceTieTolerance = 0x1p-40;

@@ -396,15 +396,8 @@ bool circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b) {
 /// Exact: the closed box a and the closed box b share a point (touching counts).
 template <Scalar T>
 bool aabb_aabb(const Aabb<T>& a, const Aabb<T>& b) {
-#if defined(COLLIDE_PLANTED_FAULT)
-  // The course notes' slip, kept behind a switch so the test suite can prove it notices:
-  // `b.max.y < a.min.x` where `a.min.y` is meant.
-  return !(a.max().x() < b.min().x() || b.max().x() < a.min().x() || a.max().y() < b.min().y() ||
-           b.max().y() < a.min().x());
-#else
   return !(a.max().x() < b.min().x() || b.max().x() < a.min().x() || a.max().y() < b.min().y() ||
            b.max().y() < a.min().y());
-#endif
 }
 
 /// Exact: the closed box a and the closed oriented box b share a point (touching counts).

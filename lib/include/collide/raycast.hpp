@@ -251,7 +251,7 @@ template <AnyShape S>
 Calc raycast_tolerance(const S& shape, const Ray<scalar_of_t<S>>& ray) {
   using T = scalar_of_t<S>;
   const Calc m = std::max(detail::scale_of(bounds(shape)), widen(ray.origin).cwiseAbs().maxCoeff());
-  return (kOverlapErrorFactor * 0x1p-53 + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
+  return (kOverlapErrorFactor * kUnitRoundoff + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
          Calc(std::numeric_limits<T>::denorm_min());
 }
 
@@ -281,7 +281,7 @@ std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_o
 
   detail::UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
   const Calc m = std::max(detail::scale_of(bounds(shape)), o.cwiseAbs().maxCoeff());
-  r.pad = 4 * 0x1p-53 * m + 16 * 0x1p-1074;  // no 2^-500 floor: tiny shapes are rescaled
+  r.pad = 4 * kUnitRoundoff * m + 16 * kSmallestDouble;  // no 2^-500 floor: tiny shapes are rescaled
   const std::optional<detail::UnitRayHit> h =
       detail::visit_shape(shape, [&](const auto& x) { return detail::ray_concrete(x, r); });
   if (!h) return std::nullopt;

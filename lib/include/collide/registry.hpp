@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -131,6 +132,35 @@ template <Scalar T>
 constexpr ShapeKind kind(const Primitive<T>& s) noexcept {
   return static_cast<ShapeKind>(s.index());
 }
+
+/// @cond COLLIDE_REGISTRY_CHECKS
+namespace detail {
+/// Whether kKinds lists every ShapeKind once in enum order and variant V's alternative I is the
+/// shape type of kind I, for every alternative, with scalar T.
+template <class V, Scalar T>
+consteval bool alternatives_follow_kinds() {
+  return []<std::size_t... I>(std::index_sequence<I...>) {
+    return ((static_cast<std::size_t>(kKinds[I]) == I) && ...) &&
+           (std::is_same_v<std::variant_alternative_t<I, V>, ShapeOf<kKinds[I], T>> && ...) &&
+           ((kind_of_v<std::variant_alternative_t<I, V>> == kKinds[I]) && ...);
+  }(std::make_index_sequence<std::variant_size_v<V>>{});
+}
+}  // namespace detail
+/// @endcond
+
+// The registry and the variants agree: one alternative per kind, in ShapeKind order, and the
+// primitives are every kind but the compound, which comes last.
+static_assert(std::variant_size_v<Shape<float>> == kKindCount, "Shape needs one alternative per kind");
+static_assert(std::variant_size_v<Primitive<float>> + 1 == kKindCount && kKinds.back() == ShapeKind::Compound,
+              "Primitive is every kind but the compound, which is the last kind");
+static_assert(detail::alternatives_follow_kinds<Shape<float>, float>() &&
+                  detail::alternatives_follow_kinds<Shape<double>, double>(),
+              "Shape's alternatives must follow ShapeKind order (kKinds, KindTraits, KindOf)");
+static_assert(detail::alternatives_follow_kinds<Primitive<float>, float>() &&
+                  detail::alternatives_follow_kinds<Primitive<double>, double>(),
+              "Primitive's alternatives must follow ShapeKind order");
+static_assert(name(kKinds.back()) == "compound" && kind_from_name("circle") == ShapeKind::Circle,
+              "kind names follow ShapeKind order");
 
 /// Calls `f.template operator()<K>()` for every kind, in order.
 template <class F>

@@ -294,85 +294,108 @@ Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x) {
 
 namespace {
 
-/// The other representations of the same point set (see laws::representation), with their names.
+/// The other representations of the same point set (see laws::representation), with their
+/// names: one add_forms overload per kind, so that std::visit in other_forms() does not compile
+/// for a kind without one.
 template <Scalar T>
-std::vector<std::pair<std::string, Shape<T>>> other_forms(const Shape<T>& a, std::string& skipped) {
-  std::vector<std::pair<std::string, Shape<T>>> out;
-  if (const auto* box = std::get_if<Aabb<T>>(&a)) {
-    const Vec2<T> lo = box->min(), hi = box->max();
-    if (lo.x() < hi.x() && lo.y() < hi.y()) {
-      const std::vector<Vec2<T>> v = {lo, Vec2<T>(hi.x(), lo.y()), hi, Vec2<T>(lo.x(), hi.y())};
-      out.emplace_back("polygon", ConvexPolygon<T>::make(std::span<const Vec2<T>>(v)).value());
-    } else {
-      skipped += " polygon (degenerate box)";
-    }
-    const Vec2<T> c = (lo + hi) / T(2), h = (hi - lo) / T(2);
-    const bool exact = c - h == lo && c + h == hi &&
-                       detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
-                       detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
-                       detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
-                       detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
-    const auto obb = Obb<T>::make_with_axis(c, h, Vec2<T>(1, 0));
-    if (exact && obb && obb.value().axis() == Vec2<T>(1, 0)) {
-      out.emplace_back("obb", obb.value());
-    } else {
-      skipped += " obb (centre and half extents not exact)";
-    }
-  } else if (const auto* circle = std::get_if<Circle<T>>(&a)) {
-    out.emplace_back("capsule", Capsule<T>(circle->center(), circle->center(), circle->radius()));
-  } else if (const auto* cap = std::get_if<Capsule<T>>(&a)) {
-    out.emplace_back("reversed capsule", Capsule<T>(cap->b(), cap->a(), cap->radius()));
-    if (cap->a() == cap->b()) {
-      out.emplace_back("circle", Circle<T>(cap->a(), cap->radius()));
-    } else {
-      skipped += " circle (capsule has length)";
-    }
-  } else if (const auto* poly = std::get_if<ConvexPolygon<T>>(&a)) {
-    // Same vertices from another start; and an axis-aligned rectangle as an AABB.
-    const auto v = poly->vertices();
-    std::vector<Vec2<T>> shifted(v.begin() + 1, v.end());
-    shifted.push_back(v[0]);
-    out.emplace_back("polygon from vertex 1", ConvexPolygon<T>::make(std::span<const Vec2<T>>(shifted)).value());
-    const Aabb<T> box = bounds(*poly);
-    bool rect = v.size() == 4;
-    for (const Vec2<T>& p : v) {
-      rect = rect && (p.x() == box.min().x() || p.x() == box.max().x()) &&
-             (p.y() == box.min().y() || p.y() == box.max().y());
-    }
-    if (rect) {
-      out.emplace_back("aabb", box);
-    } else {
-      skipped += " aabb (not an axis-aligned rectangle)";
-    }
-  } else if (const auto* comp = std::get_if<Compound<T>>(&a)) {
-    std::vector<Primitive<T>> rev(comp->children().rbegin(), comp->children().rend());
-    out.emplace_back("compound reversed", Compound<T>(std::move(rev)));
-    if (comp->children().size() == 1) out.emplace_back("its child", to_shape(comp->children().front()));
-  } else if (const auto* obb = std::get_if<Obb<T>>(&a)) {
-    const Vec2<T> c = obb->center(), h = obb->half_extents();
-    const bool axis_x = obb->axis() == Vec2<T>(1, 0);
-    const Vec2<T> lo = c - h, hi = c + h;
-    const bool exact = detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
-                       detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
-                       detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
-                       detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
-    if (axis_x && exact) {
-      out.emplace_back("aabb", Aabb<T>(lo, hi));
-    } else {
-      skipped += " aabb (rotated or inexact box)";
-    }
-    // The same box with its axes exchanged: extents swapped, axis turned a quarter (compared
-    // against the box rebuilt from the same input axis, as the rotation law does).
-    const Vec2<T> u = obb->axis();
-    const auto swapped = Obb<T>::make_with_axis(c, Vec2<T>(h.y(), h.x()), Vec2<T>(-u.y(), u.x()));
-    const auto canonical = Obb<T>::make_with_axis(c, h, u);
-    if (swapped && canonical && swapped.value().axis() == Vec2<T>(-canonical.value().axis().y(), canonical.value().axis().x()) &&
-        canonical.value().axis() == u) {
-      out.emplace_back("obb with axes exchanged", swapped.value());
-    } else {
-      skipped += " obb with axes exchanged (axis not a fixed point of normalisation)";
-    }
+using Forms = std::vector<std::pair<std::string, Shape<T>>>;
+
+template <Scalar T>
+void add_forms(const Aabb<T>& box, Forms<T>& out, std::string& skipped) {
+  const Vec2<T> lo = box.min(), hi = box.max();
+  if (lo.x() < hi.x() && lo.y() < hi.y()) {
+    const std::vector<Vec2<T>> v = {lo, Vec2<T>(hi.x(), lo.y()), hi, Vec2<T>(lo.x(), hi.y())};
+    out.emplace_back("polygon", ConvexPolygon<T>::make(std::span<const Vec2<T>>(v)).value());
+  } else {
+    skipped += " polygon (degenerate box)";
   }
+  const Vec2<T> c = (lo + hi) / T(2), h = (hi - lo) / T(2);
+  const bool exact = c - h == lo && c + h == hi &&
+                     detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
+                     detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
+                     detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
+                     detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
+  const auto obb = Obb<T>::make_with_axis(c, h, Vec2<T>(1, 0));
+  if (exact && obb && obb.value().axis() == Vec2<T>(1, 0)) {
+    out.emplace_back("obb", obb.value());
+  } else {
+    skipped += " obb (centre and half extents not exact)";
+  }
+}
+
+template <Scalar T>
+void add_forms(const Circle<T>& circle, Forms<T>& out, std::string&) {
+  out.emplace_back("capsule", Capsule<T>(circle.center(), circle.center(), circle.radius()));
+}
+
+template <Scalar T>
+void add_forms(const Capsule<T>& cap, Forms<T>& out, std::string& skipped) {
+  out.emplace_back("reversed capsule", Capsule<T>(cap.b(), cap.a(), cap.radius()));
+  if (cap.a() == cap.b()) {
+    out.emplace_back("circle", Circle<T>(cap.a(), cap.radius()));
+  } else {
+    skipped += " circle (capsule has length)";
+  }
+}
+
+template <Scalar T>
+void add_forms(const ConvexPolygon<T>& poly, Forms<T>& out, std::string& skipped) {
+  // Same vertices from another start; and an axis-aligned rectangle as an AABB.
+  const auto v = poly.vertices();
+  std::vector<Vec2<T>> shifted(v.begin() + 1, v.end());
+  shifted.push_back(v[0]);
+  out.emplace_back("polygon from vertex 1", ConvexPolygon<T>::make(std::span<const Vec2<T>>(shifted)).value());
+  const Aabb<T> box = bounds(poly);
+  bool rect = v.size() == 4;
+  for (const Vec2<T>& p : v) {
+    rect = rect && (p.x() == box.min().x() || p.x() == box.max().x()) &&
+           (p.y() == box.min().y() || p.y() == box.max().y());
+  }
+  if (rect) {
+    out.emplace_back("aabb", box);
+  } else {
+    skipped += " aabb (not an axis-aligned rectangle)";
+  }
+}
+
+template <Scalar T>
+void add_forms(const Compound<T>& comp, Forms<T>& out, std::string&) {
+  std::vector<Primitive<T>> rev(comp.children().rbegin(), comp.children().rend());
+  out.emplace_back("compound reversed", Compound<T>(std::move(rev)));
+  if (comp.children().size() == 1) out.emplace_back("its child", to_shape(comp.children().front()));
+}
+
+template <Scalar T>
+void add_forms(const Obb<T>& obb, Forms<T>& out, std::string& skipped) {
+  const Vec2<T> c = obb.center(), h = obb.half_extents();
+  const bool axis_x = obb.axis() == Vec2<T>(1, 0);
+  const Vec2<T> lo = c - h, hi = c + h;
+  const bool exact = detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
+                     detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
+                     detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
+                     detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
+  if (axis_x && exact) {
+    out.emplace_back("aabb", Aabb<T>(lo, hi));
+  } else {
+    skipped += " aabb (rotated or inexact box)";
+  }
+  // The same box with its axes exchanged: extents swapped, axis turned a quarter (compared
+  // against the box rebuilt from the same input axis, as the rotation law does).
+  const Vec2<T> u = obb.axis();
+  const auto swapped = Obb<T>::make_with_axis(c, Vec2<T>(h.y(), h.x()), Vec2<T>(-u.y(), u.x()));
+  const auto canonical = Obb<T>::make_with_axis(c, h, u);
+  if (swapped && canonical && swapped.value().axis() == Vec2<T>(-canonical.value().axis().y(), canonical.value().axis().x()) &&
+      canonical.value().axis() == u) {
+    out.emplace_back("obb with axes exchanged", swapped.value());
+  } else {
+    skipped += " obb with axes exchanged (axis not a fixed point of normalisation)";
+  }
+}
+
+template <Scalar T>
+Forms<T> other_forms(const Shape<T>& a, std::string& skipped) {
+  Forms<T> out;
+  std::visit([&](const auto& s) { add_forms(s, out, skipped); }, a);
   return out;
 }
 

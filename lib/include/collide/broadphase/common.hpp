@@ -198,7 +198,7 @@ inline std::pair<Vec2c, Vec2c> ray_bounds(const RaySegment<T>& r) noexcept {
   const Vec2c end = r.origin + r.direction * r.max_t;
   Vec2c lo = r.origin.cwiseMin(end), hi = r.origin.cwiseMax(end);
   for (int i = 0; i < 2; ++i) {
-    const Calc pad = 0x1p-40 * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + 0x1p-1000;
+    const Calc pad = kRayBoxPad * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + kRayBoxPadFloor;
     lo[i] -= pad;
     hi[i] += pad;
   }

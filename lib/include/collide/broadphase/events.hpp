@@ -68,10 +68,7 @@ class PairTracker {
   void remove(ProxyId id) {
     bp_.remove(id);
     for (const std::uint32_t other : partners_[id.index]) {
-#if !(defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 3)
-      // Planted fault 3 (tests only) skips this: a removed proxy's pairs never end.
       pending_ended_.push_back(ordered_pair(id, ids_[other]));
-#endif
       erase_sorted(partners_[other], id.index);
     }
     partners_[id.index].clear();

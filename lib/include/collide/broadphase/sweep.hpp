@@ -144,12 +144,7 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
       if (a.slot == kDead) continue;
       for (std::size_t j = i + 1; j < n; ++j) {
         const Entry& b = e[j];
-#if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 1
-        // Planted fault 1 (tests only): stops at touching x intervals, so touching pairs are lost.
-        if (b.min_x >= a.max_x) break;
-#else
         if (b.min_x > a.max_x) break;
-#endif
         if (b.slot == kDead || b.min_y > a.max_y || a.min_y > b.max_y) continue;
         if (!accepts(slots_[a.slot].filter, slots_[b.slot].filter)) continue;
         if (!call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
@@ -209,7 +204,7 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
       return e.slot != kDead && !(Calc(e.max_x) < lo.x() || Calc(e.max_y) < lo.y() || Calc(e.min_y) > hi.y());
     };
     // No entry starting before lo.x - max_width can reach lo.x (nextafter covers the rounding).
-    const Calc start = std::nextafter(lo.x() - max_width_ * (1 + 0x1p-40), -std::numeric_limits<Calc>::infinity());
+    const Calc start = std::nextafter(lo.x() - max_width_ * (1 + kSweepWidthSlack), -std::numeric_limits<Calc>::infinity());
     const auto end = entries_.begin() + std::ptrdiff_t(sorted_);
     auto it = std::lower_bound(entries_.begin(), end, start, [](const Entry& e, Calc v) { return Calc(e.min_x) < v; });
     for (; it != end && Calc(it->min_x) <= hi.x(); ++it)

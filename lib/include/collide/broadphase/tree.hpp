@@ -133,12 +133,7 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
       if (a.leaf() && b.leaf()) {
         const auto& sa = slots_[a.slot];
         const auto& sb = slots_[b.slot];
-#if defined(COLLIDE_BROADPHASE_PLANTED_FAULT) && COLLIDE_BROADPHASE_PLANTED_FAULT == 2
-        // Planted fault 2 (tests only): the fat boxes decide, so fattening adds false pairs.
-        const bool hit = boxes_overlap(a.box, b.box);
-#else
         const bool hit = boxes_overlap(sa.box, sb.box);
-#endif
         if (hit && accepts(sa.filter, sb.filter) && !call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
       } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
         jobs.push({a.child1, j.b});
