@@ -6,8 +6,7 @@ The kinds, their stored fields (with roles), sample shapes and byte forms are re
 kind added to the registry and its codec gets seeds here without an edit. Seeds are small and
 deterministic: every unordered pair of kinds in float and double, overlapping, touching (for the
 kinds whose samples 2 apart touch exactly) and separated; every kind with valid values, special
-values (NaN, infinities, huge, subnormal) and values each of its rules rejects; a few broadphase
-scripts.
+values (NaN, infinities, huge, subnormal) and values aimed at its rules; a few broadphase scripts.
 
 usage: fuzz/make_corpus.py [--build-dir build/ci] [--out fuzz/corpus] [--drop-failing]
 (replaces the seed files it writes, s-*.bin). With --drop-failing, every seed is run through
@@ -95,9 +94,9 @@ def ray(dbl):
 
 
 def rejected_values(codecs, kind):
-    """(name, values) that a kind's rules reject, derived from the fields' roles: a negative size,
-    the first two x values exchanged (min > max), all 'other' values zero (a zero axis); for
-    vertices, two points (too few) and three on a line (collinear)."""
+    """(name, values) aimed at a kind's rules, derived from the fields' roles: a negative size, the
+    first two x values exchanged (min > max where they are a box's corners), all 'other' values
+    zero (a zero axis); for vertices, two points (too few) and three on a line (collinear)."""
     k = codecs.kinds[kind]
     base = codecs.placed(kind, 1, -2, 1.5)
     roles = [k["fields"][i % len(k["fields"])]["role"] for i in range(len(base))]

@@ -156,12 +156,17 @@ def patch_sources(mutants: list[Mutant], src: pathlib.Path) -> dict[str, str]:
     return patched
 
 
-def planted_header(name: str) -> tuple[str, str]:
-    """(path relative to lib/include, patched text) of the planted fault `name`."""
+def planted_fault(name: str) -> Mutant:
+    """The planted fault `name` of scripts/planted_faults.txt."""
     faults = {mu.name: mu for mu in parse_list(PLANTED)}
     if name not in faults:
         raise ListError(f"no planted fault named {name} in {PLANTED.name} (known: {', '.join(sorted(faults))})")
-    mu = faults[name]
+    return faults[name]
+
+
+def planted_header(name: str) -> tuple[str, str]:
+    """(path relative to lib/include, patched text) of the planted fault `name`."""
+    mu = planted_fault(name)
     text = (ROOT / mu.path).read_text()
     if text.count(mu.original) != 1:
         raise ListError(f"[{mu.name}] {mu.path}: original text found {text.count(mu.original)} times (need exactly 1)")
@@ -285,10 +290,12 @@ def main() -> int:
 
     try:
         if args.planted:
-            rel, text = planted_header(args.planted)
+            # The path alone does not check the text: the mutation build configures a tree whose
+            # headers carry mutant switches, and never builds the planted targets.
             if args.print_path:
-                print(rel)
+                print(planted_fault(args.planted).path.removeprefix("lib/include/"))
             elif args.out:
+                rel, text = planted_header(args.planted)
                 write_if_changed(pathlib.Path(args.out) / rel, text)
             else:
                 raise ListError("--planted needs --out DIR or --print-path")

@@ -9,7 +9,11 @@
 //   symmetric against probe shapes, contact/distance/resolve/raycast return finite, consistent
 //   values, translated() returns a shape or a named error, and the shape overlaps itself.
 //
-// Input: flags byte (bit 0: double), then one shape (format in collide/fuzz/decode.hpp).
+// - with flags bit 1, a transform follows the shape (px py qx qy): a named error, or a unit
+//   rotation that the transform codec rebuilds bit for bit.
+//
+// Input: flags byte (bit 0: double, bit 1: a transform follows), then one shape (format in
+// collide/fuzz/decode.hpp), then the transform's four values.
 
 #include "collide/fuzz/decode.hpp"
 #include "collide/fuzz/failure.hpp"
@@ -21,7 +25,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <array>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -136,6 +142,31 @@ bool has_rejection_layout(ShapeKind kind, std::uint8_t form_byte) {
   return visit_kind(kind, [&]<ShapeKind K>() { return Decoder<K, float>::stored_values(form_byte); });
 }
 
+/// A transform after the shape (flags bit 1): a named error, or a transform whose position is the
+/// input's, whose rotation is unit within 4 eps_T, and which the codec rebuilds bit for bit.
+template <Scalar T>
+void check_transform(Reader& r) {
+  Reader peek = r;
+  const std::array<T, 4> x = laws::read_transform_values<T>(peek);
+  const Expected<Transform<T>> xf = decode_transform<T>(r);
+  if (!xf) {
+    const Error e = xf.error().code();
+    if (e != Error::NonFinite && e != Error::OutOfRange && e != Error::ZeroRotation)
+      fail_raw("transform rejected with ", name(e), " (expected NonFinite, OutOfRange or ZeroRotation)");
+    return;
+  }
+  const Transform<T>& t = xf.value();
+  if (!(t.position() == Vec2<T>(x[0], x[1]))) fail_raw("transform position differs from its input");
+  const Calc q2 = widen(t.rotation()).squaredNorm();
+  if (!(std::fabs(q2 - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon())))
+    fail_raw("transform rotation is not unit: |q|^2 = ", format_value(q2));
+  try {
+    if (!(laws::transform_from_data<T>(laws::to_data(t)) == t)) fail_raw("the codec rebuilt another transform");
+  } catch (const laws::CodecError& e) {
+    fail_raw("the codec cannot rebuild a valid transform: ", e.what());
+  }
+}
+
 template <Scalar T>
 void run(const std::uint8_t* data, std::size_t size) {
   std::vector<Field> fields;
@@ -174,6 +205,7 @@ void run(const std::uint8_t* data, std::size_t size) {
     }
   }
   if (made) check_valid(made.value());
+  if (size > 0 && (data[0] & 2) != 0) check_transform<T>(r);
 }
 
 }  // namespace

@@ -16,6 +16,8 @@
 #include "collide/laws/laws.hpp"
 #include "collide/oracle/oracle.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -473,18 +475,11 @@ void pythagorean(Rng& g, Tally& t) {
 int main(int argc, char** argv) {
   std::uint64_t cases = 20000, seed = 1;
   std::string save_dir;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--cases") && i + 1 < argc) {
-      cases = std::strtoull(argv[++i], nullptr, 10);
-    } else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc) {
-      seed = std::strtoull(argv[++i], nullptr, 10);
-    } else if (!std::strcmp(argv[i], "--save-cases") && i + 1 < argc) {
-      save_dir = argv[++i];
-    } else {
-      std::fprintf(stderr, "usage: %s [--cases N] [--seed S] [--save-cases DIR]\n", argv[0]);
-      return 2;
-    }
-  }
+  CLI::App app{"Adversarial boundary cases of the exact decisions, judged by the exact oracle"};
+  app.add_option("--cases", cases, "cases to generate");
+  app.add_option("--seed", seed, "generator seed");
+  app.add_option("--save-cases", save_dir, "write each failing case as a case file into this folder");
+  CLI11_PARSE(app, argc, argv);
   Rng g{seed};
   Tally t;
   t.save_dir = save_dir;

@@ -9,6 +9,8 @@
 #include "collide/laws/case_file.hpp"
 #include "collide/laws/laws.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -149,11 +151,16 @@ int self_test() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && args[0] == "--self-test") return self_test();
-  if (args.empty()) {
-    std::cerr << "usage: collide_replay_cases DIR|FILE... | --self-test\n";
+  CLI::App app{"Replays regression case files through the laws"};
+  std::vector<std::string> paths;
+  bool self = false;
+  app.add_option("paths", paths, "case files, or folders of them")->check(CLI::ExistingPath);
+  app.add_flag("--self-test", self, "check the case format itself (round trips, codecs, errors)");
+  CLI11_PARSE(app, argc, argv);
+  if (self) return self_test();
+  if (paths.empty()) {
+    std::cerr << app.help();
     return 2;
   }
-  return replay_all(args);
+  return replay_all(paths);
 }

@@ -3,8 +3,10 @@
 /// The one registry of shape kinds and pairs. The library's dispatch, the oracle, the property
 /// generators and the fuzz decoders all iterate these lists; none keeps its own pair table.
 ///
-/// Adding a shape kind: add it to ShapeKind, kKinds, kind names, KindTraits and the Shape variant
-/// (in kind order); every consumer that misses the new kind then fails to compile.
+/// Adding a shape kind: add it to ShapeKind, kKinds, kind names, KindTraits, KindOf and the Shape
+/// variant (in kind order; the static_asserts below stop the build when these disagree), and give
+/// it a codec (oracles/laws codec.hpp); every consumer that misses the new kind then fails to
+/// compile. README.md, "Adding a kind or a law", lists the rest file by file.
 
 #include "collide/compound.hpp"
 #include "collide/shapes.hpp"
