@@ -64,7 +64,7 @@ std::string seed_text() {
 
 /// Checks a verdict inside a property: counts it, keeps the input when it fails, asserts.
 template <Scalar T>
-void judge(const laws::Verdict& v, const std::string& law, const std::string& pair, const Shape<T>& a,
+void judge(const laws::Verdict& v, laws::Law law, const std::string& pair, const Shape<T>& a,
            const std::optional<Shape<T>>& b, bool classify, const std::function<void(laws::Case&)>& extra = {}) {
   g_tally.record(v, classify);
   if (classify) RC_CLASSIFY(true, std::string(laws::name(v.relation)));
@@ -72,8 +72,9 @@ void judge(const laws::Verdict& v, const std::string& law, const std::string& pa
   if (!v.ok) {
     g_tally.failed = true;
     const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
-    laws::Case c = laws::make_case<T>(*laws::law_from_name(law), a, b, v,
-                                      "property " + law + " " + pair + " " + scalar + " " + seed_text());
+    laws::Case c = laws::make_case<T>(law, a, b, v,
+                                      "property " + std::string(laws::name(law)) + " " + pair + " " + scalar + " " +
+                                          seed_text());
     if (extra) extra(c);
     g_tally.counterexample = c;
   }
@@ -178,11 +179,10 @@ void expect_disagreement_ceiling(const std::string& what) {
 template <Scalar T>
 std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& subject) {
   using laws::Law;
-  const std::string law_name(laws::name(law));
   auto simple = [=](laws::Verdict (*f)(const Shape<T>&, const Shape<T>&)) -> std::function<void()> {
     return [=] {
       const auto [a, b] = gen_pair<T>(ka, kb);
-      judge<T>(f(a, b), law_name, subject, a, b, true);
+      judge<T>(f(a, b), law, subject, a, b, true);
     };
   };
   switch (law) {
@@ -194,13 +194,13 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     case Law::Touching:
       return [=] {
         const auto [a, b] = gen_touching_pair<T>(ka, kb);
-        judge<T>(laws::touching(a, b), law_name, subject, a, b, true);
+        judge<T>(laws::touching(a, b), law, subject, a, b, true);
       };
     case Law::Translation:
       return [=] {
         const auto [a, b] = gen_pair<T>(ka, kb);
         const Vec2<T> t = gen_translation<T>(1.0);
-        judge<T>(laws::translation(a, b, t), law_name, subject, a, b, true, [=](laws::Case& c) {
+        judge<T>(laws::translation(a, b, t), law, subject, a, b, true, [=](laws::Case& c) {
           c.tx = t.x();
           c.ty = t.y();
         });
@@ -210,7 +210,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const auto [a, b] = gen_pair<T>(ka, kb);
         const int k = *rc::gen::inRange(0, 4);
         const bool mirror = *rc::gen::arbitrary<bool>();
-        judge<T>(laws::rotation(a, b, k, mirror), law_name, subject, a, b, true, [=](laws::Case& c) {
+        judge<T>(laws::rotation(a, b, k, mirror), law, subject, a, b, true, [=](laws::Case& c) {
           c.quarter_turns = k;
           c.mirror = mirror;
         });
@@ -223,19 +223,19 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const int extra = *rc::gen::inRange(0, 3);
         for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
         const Shape<T> comp = Compound<T>(std::move(children));
-        judge<T>(laws::hierarchy(comp, b), law_name, subject, comp, b, true);
+        judge<T>(laws::hierarchy(comp, b), law, subject, comp, b, true);
       };
     case Law::Representation:
       return [=] {
         const auto [a, b] = gen_pair<T>(ka, kb);
         const bool first = *rc::gen::arbitrary<bool>();
-        judge<T>(first ? laws::representation(a, b) : laws::representation(b, a), law_name, subject, first ? a : b,
+        judge<T>(first ? laws::representation(a, b) : laws::representation(b, a), law, subject, first ? a : b,
                  first ? b : a, true);
       };
     case Law::Bounds:
       return [=] {
         const auto [a, b] = gen_pair<T>(ka, ka);
-        judge<T>(laws::bounds_law(a), law_name, subject, a, std::nullopt, false);
+        judge<T>(laws::bounds_law(a), law, subject, a, std::nullopt, false);
       };
     case Law::Raycast:
       return [=] {
@@ -247,7 +247,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const Vec2<T> dir = aimed ? Vec2<T>((to - from).template cast<T>()) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
         const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
         const laws::Verdict v = laws::raycast_law(a, Ray<T>{origin, dir}, max_t);
-        judge<T>(v, law_name, subject, a, std::nullopt, false, [=](laws::Case& c) {
+        judge<T>(v, law, subject, a, std::nullopt, false, [=](laws::Case& c) {
           c.ox = origin.x();
           c.oy = origin.y();
           c.dx = dir.x();
@@ -259,7 +259,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return [=] {
         const auto [a, b] = gen_pair<T>(ka, ka);
         const Vec2<T> p = gen_point_near(a);
-        judge<T>(laws::contains_law(a, p), law_name, subject, a, std::nullopt, false, [=](laws::Case& c) {
+        judge<T>(laws::contains_law(a, p), law, subject, a, std::nullopt, false, [=](laws::Case& c) {
           c.ox = p.x();
           c.oy = p.y();
         });
@@ -277,7 +277,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
             for (const Primitive<T>& p : laws::primitives_of(*sh)) all.push_back(p);
         }
         const Shape<T> group = Compound<T>(std::move(all));
-        judge<T>(laws::scene(group), law_name, subject, group, std::nullopt, false);
+        judge<T>(laws::scene(group), law, subject, group, std::nullopt, false);
       };
     case Law::Rejection:
       return [=] {
@@ -305,7 +305,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
           c.expected = v.expected;
           c.got = v.got;
           c.account = v.account;
-          c.source = "property " + law_name + " " + subject + " " + c.scalar + " " + seed_text();
+          c.source = "property " + std::string(laws::name(law)) + " " + subject + " " + c.scalar + " " + seed_text();
           g_tally.counterexample = c;
         }
         if (!v.ok) RC_FAIL(v.account);
