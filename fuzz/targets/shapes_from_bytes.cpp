@@ -167,6 +167,18 @@ void check_transform(Reader& r) {
   }
 }
 
+/// A valid shape's stored values rebuild the same shape through its codec (what a case file
+/// relies on): every factory keeps the values it stored.
+template <Scalar T>
+void check_rebuilt(const Shape<T>& s) {
+  try {
+    if (!same_data(laws::to_data(laws::from_data<T>(laws::to_data(s))), laws::to_data(s)))
+      fail_raw("the codec rebuilt another shape from its stored values");
+  } catch (const laws::CodecError& e) {
+    fail_raw("the codec cannot rebuild a valid shape: ", e.what());
+  }
+}
+
 template <Scalar T>
 void run(const std::uint8_t* data, std::size_t size) {
   std::vector<Field> fields;
@@ -204,7 +216,10 @@ void run(const std::uint8_t* data, std::size_t size) {
            [&](laws::Case& c) { c.values.assign(values.begin(), values.end()); });
     }
   }
-  if (made) check_valid(made.value());
+  if (made) {
+    check_rebuilt(made.value());
+    check_valid(made.value());
+  }
   if (size > 0 && (data[0] & 2) != 0) check_transform<T>(r);
 }
 

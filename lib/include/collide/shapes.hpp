@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <variant>
 #include <vector>
@@ -42,6 +43,17 @@ inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexc
     if (!check_value(v, i++, out)) return false;
   }
   return true;
+}
+
+/// v / |v| for a finite v, or nullopt for the zero vector. v is first scaled by a power of two
+/// (exact) so that its larger coordinate lies in [1, 2): subnormal or huge directions normalise
+/// as accurately as ordinary ones, and the result is unit within a few roundings of double.
+inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
+  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+  if (!(m > 0)) return std::nullopt;
+  const int e = std::ilogb(m);
+  const Vec2c w(std::scalbn(v.x(), -e), std::scalbn(v.y(), -e));
+  return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
 struct Unchecked {};
@@ -181,10 +193,9 @@ class Obb {
     const Vec2c a = widen(axis);
     if (std::fabs(a.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
       return Obb(detail::Unchecked{}, center, half_extents, axis);
-    const Calc len = std::hypot(a.x(), a.y());
-    if (!(len > 0)) return ShapeError(Error::ZeroAxis, -1, "OBB axis is the zero vector");
-    const Vec2<T> u = (a / len).template cast<T>();
-    return Obb(detail::Unchecked{}, center, half_extents, u);
+    const std::optional<Vec2c> u = detail::normalized(a);
+    if (!u) return ShapeError(Error::ZeroAxis, -1, "OBB axis is the zero vector");
+    return Obb(detail::Unchecked{}, center, half_extents, u->template cast<T>());
   }
   /// The course notes' form: four corners in order around the rectangle (either winding).
   /// They must form a rectangle up to rounding: |p0 + p2 - p1 - p3| <= 16 eps_T S and
