@@ -125,7 +125,7 @@ class Compound {
   }
   /// Children with their own transforms (the image of each child under its transform, as a
   /// transformed query defines it). Errors: EmptyCompound. Allocates (the compound owns its children).
-  static Expected<Compound> make(std::vector<Child> children) {
+  static Expected<Compound> make_placed(std::vector<Child> children) {
     if (children.empty()) return ShapeError(Error::EmptyCompound, -1, "compound has no children");
     bool placed = false;
     for (const Child& c : children) placed = placed || !c.transform.is_identity();
@@ -150,8 +150,6 @@ class Compound {
   }
   /// As make(), throwing the ShapeError.
   explicit Compound(std::vector<Primitive<T>> children) : Compound(make(std::move(children)).value()) {}
-  /// As make(), throwing the ShapeError.
-  explicit Compound(std::vector<Child> children) : Compound(make(std::move(children)).value()) {}
 
   /// The children, in the order given, each in its own local frame (see child_transform()).
   const std::vector<Primitive<T>>& children() const noexcept { return children_; }
@@ -172,9 +170,9 @@ class Compound {
   Compound(std::vector<Primitive<T>> c, std::vector<Transform<T>> x, const Aabb<T>& b, Calc extent)
       : children_(std::move(c)), transforms_(std::move(x)), bounds_(b), extent_(extent) {}
   std::vector<Primitive<T>> children_;
-  std::vector<Transform<T>> transforms_;  // empty when every child is placed by the identity
+  std::vector<Transform<T>> transforms_{};  // empty when every child is placed by the identity
   Aabb<T> bounds_;
-  Calc extent_;
+  Calc extent_ = 0;
 };
 
 /// The compound's cached box (the union of its children's boxes).

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace collide::detail {
 
@@ -46,6 +48,15 @@ struct ShapeAccess {
     return poly;
   }
 };
+
+/// A defining point's image, x(v).
+inline Vec2c image_point(const Pose& x, const Vec2c& v) noexcept {
+#if defined(COLLIDE_PLANTED_FAULT)
+  return Pose{x.p, Vec2c(x.q.x(), -x.q.y())}.apply(v);  // the property suite's planted fault: turned the wrong way
+#else
+  return x.apply(v);
+#endif
+}
 
 /// The same shape with double values (exact: every float is a double).
 template <Scalar T>
@@ -80,17 +91,17 @@ ConvexPolygon<Calc> widened_shape(const ConvexPolygon<T>& s) {
 /// flattened it entirely).
 template <Scalar T, class F>
 decltype(auto) with_image(const Circle<T>& s, const Pose& x, F&& f) {
-  return f(ShapeAccess::circle<Calc>(x.apply(widen(s.center())), s.radius()));
+  return f(ShapeAccess::circle<Calc>(image_point(x, widen(s.center())), s.radius()));
 }
 /// As for a circle: both ends mapped, radius kept.
 template <Scalar T, class F>
 decltype(auto) with_image(const Capsule<T>& s, const Pose& x, F&& f) {
-  return f(ShapeAccess::capsule<Calc>(x.apply(widen(s.a())), x.apply(widen(s.b())), s.radius()));
+  return f(ShapeAccess::capsule<Calc>(image_point(x, widen(s.a())), image_point(x, widen(s.b())), s.radius()));
 }
 /// Centre mapped, half extents kept, axis turned by R(q).
 template <Scalar T, class F>
 decltype(auto) with_image(const Obb<T>& s, const Pose& x, F&& f) {
-  return f(ShapeAccess::obb<Calc>(x.apply(widen(s.center())), widen(s.half_extents()), x.rotate(widen(s.axis()))));
+  return f(ShapeAccess::obb<Calc>(image_point(x, widen(s.center())), widen(s.half_extents()), x.rotate(widen(s.axis()))));
 }
 /// Under a rotation with a zero component (quarter turns, translations) an AABB's image is an
 /// AABB (the mapped corners); otherwise an OBB with axis q.
@@ -98,22 +109,29 @@ template <Scalar T, class F>
 decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
   const Vec2c lo = widen(s.min()), hi = widen(s.max());
   if (x.q.x() == 0 || x.q.y() == 0) {
-    const Vec2c a = x.apply(lo), b = x.apply(hi);
+    const Vec2c a = image_point(x, lo), b = image_point(x, hi);
     return f(ShapeAccess::aabb<Calc>(a.cwiseMin(b), b.cwiseMax(a)));
   }
   const Vec2c c = (lo + hi) * 0.5, h = (hi - lo) * 0.5;
-  return f(ShapeAccess::obb<Calc>(x.apply(c), h, x.q));
+  return f(ShapeAccess::obb<Calc>(image_point(x, c), h, x.q));
 }
+/// The image of a polygon that rounding made not strictly convex: the hull of its rounded
+/// vertices, or nothing when they are all on one line (kept out of line: a rare path).
+[[gnu::noinline]] inline std::optional<ConvexPolygon<Calc>> rounded_hull(const ConvexPolygon<Calc>& img) {
+  Expected<ConvexPolygon<Calc>> hull = ConvexPolygon<Calc>::make_hull(img.vertices());
+  if (!hull) return std::nullopt;
+  return std::move(hull).value();
+}
+
 /// Vertices mapped; see above for the polygon that rounding made not strictly convex.
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const std::size_t n = s.size();
-  const ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return x.apply(widen(s[k])); });
+  const ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
   bool strict = true;
   for (std::size_t k = 0; k < n && strict; ++k) strict = orient(img[k], img[(k + 1) % n], img[(k + 2) % n]) > 0;
   if (strict) return f(img);
-  const Expected<ConvexPolygon<Calc>> hull = ConvexPolygon<Calc>::make_hull(img.vertices());
-  if (hull) return f(*hull);
+  if (const std::optional<ConvexPolygon<Calc>> hull = rounded_hull(img)) return f(*hull);
   // Flattened to a segment (or a point): its extreme points in lexicographic order.
   const auto less = [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
   const auto [lo, hi] = std::minmax_element(img.vertices().begin(), img.vertices().end(), less);

@@ -76,6 +76,9 @@ class Transform {
     if (std::fabs(r.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
       return Transform(position, rotation);
     const Calc len = std::hypot(r.x(), r.y());
+#if defined(COLLIDE_PLANTED_FAULT)
+    if (!(len > 0)) return Transform(position, Vec2<T>(T(1), T(0)));  // the planted fault: a zero rotation accepted
+#endif
     if (!(len > 0)) return ShapeError(Error::ZeroRotation, -1, "transform rotation is the zero vector");
     return Transform(position, (r / len).template cast<T>());
   }

@@ -150,10 +150,25 @@ std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const Transform<scala
       a, xa, b, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
 }
 
+/// The margin resolve(a, xa, b, xb) adds (at most this): resolve_margin()'s formula on the world
+/// images, with S_a the larger of bounds(a, xa)'s coordinates and |xa's position|_inf (the move
+/// rounds the position to T), plus 2 (transform_tolerance(a, xa) + transform_tolerance(b, xb))
+/// (the depth is computed on one image and the moved shape is another). resolve_margin(a, b,
+/// depth) for two identities.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+Calc resolve_margin(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
+                    Calc depth) {
+  if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth);
+  const Calc sa = std::max(detail::box_scale(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
+  const Calc s = std::max(sa, detail::box_scale(bounds(b, xb)));
+  return detail::margin_of<scalar_of_t<A>>(s, sa, depth) + 2 * overlap_tolerance(a, xa, b, xb);
+}
+
 /// The world-space push that separates a (placed by xa) from b (placed by xb): a's transform
-/// moved by it (Transform::moved) no longer overlaps. Zero when they do not overlap. The margin is
-/// resolve_margin() of the images, with S_a the larger of the image's coordinates and |xa's
-/// position| (what the move rounds to T), plus 2 (transform_tolerance(a, xa) + transform_tolerance(b, xb)).
+/// moved by it (Transform::moved) no longer overlaps. Zero when they do not overlap. Margin: at most
+/// resolve_margin(a, xa, b, xb, depth); tested by moving a's transform only for polygons and
+/// compounds, as resolve() does.
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 Vec2<scalar_of_t<A>> resolve(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,

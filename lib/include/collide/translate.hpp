@@ -78,7 +78,7 @@ Expected<Compound<T>> translated(const Compound<T>& s, const Vec2<T>& v) {
         s.children()[i]);
     if (err) return *err;
   }
-  return Compound<T>::make(std::move(moved));
+  return Compound<T>::make_placed(std::move(moved));
 }
 /// A variant translated: same alternative, moved by v. Errors: those of the shape's factory
 /// (NonFinite, OutOfRange when the move leaves the representable range; Collinear when rounding
