@@ -87,7 +87,9 @@ TYPED_TEST(Transforms, RotatedShapesMatchTheirBuiltImages) {
   const Obb<T> obb_w = Obb<T>::make_with_axis(V(2, 1), V(1, 0.5), x.rotation()).value();
   const auto c = contact(box, x, probe, Transform<T>()), cw = contact(obb_w, probe);
   ASSERT_EQ(bool(c), bool(cw));
-  if (c) EXPECT_NEAR(double(c->depth), double(cw->depth), 1e-5);
+  if (c) {
+    EXPECT_NEAR(double(c->depth), double(cw->depth), 1e-5);
+  }
   // The placed shape's box holds its image.
   const Aabb<T> bb = bounds(box, x);
   for (const Vec2c& corner : {Vec2c(-1, -0.5), Vec2c(1, -0.5), Vec2c(1, 0.5), Vec2c(-1, 0.5)}) {

@@ -10,13 +10,22 @@
 /// Error contract (the one definition; README and the oracle properties refer to it):
 /// - S(a, b) = the largest absolute coordinate of bounds(a) and bounds(b).
 /// - overlaps(a, b) is exact for every pair and both scalars: it equals the exact answer for the
-///   stored values, touching included (decide.hpp); overlap_tolerance(a, b) = 0.
+///   stored values, touching included (decide.hpp); overlap_tolerance(a, b) = 0 (except for
+///   compounds with child transforms, below).
 /// - rounding_tolerance(a, b) = 64 * 2^-53 * S + 2^-500 is the error unit of the rounded outputs
 ///   (contact depth, normal and points, distance, resolution margin).
 /// - contact(a, b) exists exactly when overlaps(a, b) is true.
 /// - Tiny shapes (every value below 2^-400) have their rounded outputs computed on exactly
 ///   rescaled cores, so those are relative-accurate; the 2^-500 floor is a bound.
 /// - contains() is exact for every kind (contains.hpp); raycast() states its bound in raycast.hpp.
+/// - Shapes placed by transforms (transformed.hpp, every query with a Transform per shape): the
+///   exact shape is the exact image of the stored values; the identity computes nothing and
+///   gives these answers. Otherwise the image is rounded in double within transform_tolerance(s,
+///   x) = 16 * 2^-53 * (|position|_inf + 2 L) + 2^-1070 (L the local magnitude; 0 for the
+///   identity), exact for exact translations and quarter turns: overlaps() is exact outside a
+///   band of the two transform_tolerance()s, and rounded outputs add them to their bound. A
+///   compound whose children carry transforms is placed the same way in world space
+///   (placement_tolerance(), included in overlap_tolerance() and rounding_tolerance()).
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"

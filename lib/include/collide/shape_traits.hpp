@@ -74,20 +74,16 @@ struct IsCompound<PlacedCompound<T>> : std::true_type {};
 template <class S>
 inline constexpr bool is_compound_v = IsCompound<std::remove_cvref_t<S>>::value;
 
-/// Calls f with child i of c placed by `body` composed with the child's own transform: the child
-/// itself when that is the identity, otherwise its image (image.hpp).
+/// Calls f with the image of child i of c under `body` composed with the child's own transform
+/// (always an image in double, even of the identity: one set of placed types).
 template <Scalar T, class F>
 void visit_child(const Compound<T>& c, std::size_t i, const Pose& body, F&& f) {
-  const Primitive<T>& child = c.children()[i];
   const Pose x = c.has_child_transforms() ? compose(body, c.child_transform(i).pose()) : body;
-  if (x.is_identity()) {
-    std::visit(f, child);
-  } else {
-    std::visit([&](const auto& p) { with_image(p, x, f); }, child);
-  }
+  std::visit([&](const auto& p) { with_image(p, x, f); }, c.children()[i]);
 }
 
-/// Calls f with each primitive of s (s itself, or each child of a compound, placed).
+/// Calls f with each primitive of s (s itself, or each child of a compound, placed: a compound
+/// with child transforms is visited through its children's images).
 template <class S, class F>
 void for_each_primitive(const S& s, F&& f) {
   if constexpr (std::is_same_v<S, Compound<scalar_of_t<S>>>) {

@@ -25,9 +25,12 @@
 ///   spare. The 2^-1070 floor covers products that underflow.
 /// - With the identity, exact translations and quarter turns (q = (+-1, 0) or (0, +-1), and every
 ///   sum coordinate + position exact in double, which holds for float shapes and positions whose
-///   magnitudes are within 2^28 of each other) the image is exact and overlaps, contains, contact,
-///   distance and raycast equal the world-space answers on the moved shape; resolve() may push
-///   further, by its margin's 2 delta_T terms.
+///   magnitudes are within 2^28 of each other) the image is exact: overlaps and contains are the
+///   exact answers, and when the image's values are exact in T too, every answer (contact,
+///   distance, raycast included) equals the world-space answer on x(s) built by the factories,
+///   which then holds the same values; resolve() may push further, by its margin's delta_T terms.
+///   Moving both shapes of a pair by one exact transform keeps the decisions; rounded outputs
+///   move within their bounds (their rounding depends on where the shapes are).
 /// - overlaps(a, xa, b, xb) equals the exact answer for the exact images whenever their signed
 ///   distance (gap, or minus the penetration depth) is outside
 ///   [-overlap_tolerance(a, xa, b, xb), +overlap_tolerance(a, xa, b, xb)], the sum of both delta_T.
@@ -63,11 +66,13 @@ Calc local_extent(const S& s) {
   }
 }
 
-/// Calls f with the concrete shape s placed by x: s itself for the identity (nothing is
-/// computed), a primitive's image, or a compound seen through its placement.
+/// Calls f with the concrete shape s placed by x, always in double: a primitive's image (exact for
+/// the identity), or a compound seen through its placement. Imaging even the identity keeps one
+/// set of placed types (the five primitives in double and the placed compound) whatever the
+/// kinds, so a transformed query instantiates what a world-space query in double does; the
+/// queries take the world-space path when both transforms are identities.
 template <class S, Scalar T, class F>
 decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
-  if (x.is_identity()) return f(s);
   if constexpr (is_compound_v<S>) {
     return f(placed(s, x.pose()));
   } else {
@@ -134,6 +139,7 @@ Aabb<scalar_of_t<S>> bounds(const S& s, const Transform<scalar_of_t<S>>& x) {
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 bool overlaps(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+  if (xa.is_identity() && xb.is_identity()) return overlaps(a, b);
   return detail::with_placed_pair(a, xa, b, xb,
                                   [](const auto& pa, const auto& pb) { return detail::overlaps_concrete(pa, pb); });
 }
@@ -146,6 +152,7 @@ template <AnyShape A, AnyShape B, class... Extra>
 std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
                                                const Transform<scalar_of_t<A>>& xb, const Extra&... extra) {
   using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return detail::contact_as<T>(a, b, extra...);
   return detail::with_placed_pair(
       a, xa, b, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
 }
@@ -200,6 +207,7 @@ template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 scalar_of_t<A> distance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
   using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return distance(a, b);
   return detail::with_placed_pair(a, xa, b, xb,
                                   [](const auto& pa, const auto& pb) { return detail::distance_as<T>(pa, pb); });
 }
@@ -208,6 +216,7 @@ scalar_of_t<A> distance(const A& a, const Transform<scalar_of_t<A>>& xa, const B
 /// except for points within transform_tolerance(s, x) of its boundary. NaN gives false.
 template <AnyShape S>
 bool contains(const S& s, const Transform<scalar_of_t<S>>& x, const Vec2<scalar_of_t<S>>& p) {
+  if (x.is_identity()) return contains(s, p);
   const Vec2c q = widen(p);
   if (!std::isfinite(q.x()) || !std::isfinite(q.y())) return false;
   return detail::visit_shape(s, [&](const auto& c) {
@@ -227,6 +236,7 @@ template <AnyShape S>
 std::optional<RayHit<scalar_of_t<S>>> raycast(const S& s, const Transform<scalar_of_t<S>>& x,
                                               const Ray<scalar_of_t<S>>& ray, scalar_of_t<S> max_t) {
   using T = scalar_of_t<S>;
+  if (x.is_identity()) return raycast(s, ray, max_t);
   return detail::visit_shape(s, [&](const auto& c) {
     return detail::with_placed(c, x, [&](const auto& img) { return detail::raycast_as<T>(img, ray, max_t); });
   });

@@ -167,6 +167,16 @@ std::optional<Shape<T>> world_shape(const Shape<T>& s, const Transform<T>& x) {
   return to_shape(*k);
 }
 
+/// A pair law's body, run with the exact images of both placed shapes (the relation recorded).
+template <Scalar T, class F>
+Verdict judged_pair(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb, F&& body) {
+  return judged(pair_context(a, xa, b, xb), [&](Judgement& j) {
+    const oracle::Placed pa = oracle::placed(a, xa), pb = oracle::placed(b, xb);
+    j.v.relation = placed_relation(pa, pb);
+    body(j, pa, pb);
+  });
+}
+
 template <Scalar T>
 bool primitives_only(const Shape<T>& a, const Shape<T>& b) {
   return !detail::is_compound(a) && !detail::is_compound(b);
@@ -183,9 +193,7 @@ double output_bound(double unit, double m) {
 
 template <Scalar T>
 Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
-  return judged(pair_context(a, xa, b, xb), [&](Judgement& j) {
-    const oracle::Placed pa = oracle::placed(a, xa), pb = oracle::placed(b, xb);
-    j.v.relation = placed_relation(pa, pb);
+  return judged_pair(a, xa, b, xb, [&](Judgement& j, const oracle::Placed& pa, const oracle::Placed& pb) {
     const bool got = overlaps(a, xa, b, xb);
     const bool rev = overlaps(b, xb, a, xa);
     j.note("overlaps " + yes(got));
@@ -207,9 +215,7 @@ Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<
 
 template <Scalar T>
 Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
-  return judged(pair_context(a, xa, b, xb), [&](Judgement& j) {
-    const oracle::Placed pa = oracle::placed(a, xa), pb = oracle::placed(b, xb);
-    j.v.relation = placed_relation(pa, pb);
+  return judged_pair(a, xa, b, xb, [&](Judgement& j, const oracle::Placed& pa, const oracle::Placed& pb) {
     const bool primitives = primitives_only(a, b);
     const double unit = rounding_tolerance(a, xa, b, xb);
     // Contact: unit normal, depth against the exact images' depth, normal separating, points midway.
@@ -248,9 +254,7 @@ Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>
 
 template <Scalar T>
 Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
-  return judged(pair_context(a, xa, b, xb), [&](Judgement& j) {
-    const oracle::Placed pa = oracle::placed(a, xa), pb = oracle::placed(b, xb);
-    j.v.relation = placed_relation(pa, pb);
+  return judged_pair(a, xa, b, xb, [&](Judgement& j, const oracle::Placed& pa, const oracle::Placed& pb) {
     const bool got = overlaps(a, xa, b, xb);
     const Vec2<T> push = resolve(a, xa, b, xb);
     j.note("push " + vec(push));
@@ -261,7 +265,8 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
     const Expected<Transform<T>> moved = xa.moved(push);
     if (!moved) {
       j.require(moved.error().code() == Error::OutOfRange, "a moved transform, or OutOfRange", moved.error().what());
-      j.require(oracle::separates(pa, pb, push.template cast<double>()), "exact a + push apart from b", "still overlapping");
+      j.require(oracle::separates(pa, pb, Vec2<double>(push.template cast<double>())), "exact a + push apart from b",
+                "still overlapping");
       return;
     }
     const oracle::Placed after = oracle::placed(a, *moved);
@@ -294,6 +299,10 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
                             vec(box.min()) + " .. " + vec(box.max()));
                   // Containment, exact outside the band.
                   const bool in = contains(s, x, p);
+                  if (!p.allFinite()) {
+                    j.require(!in, "no NaN or infinite point contained", "contained");
+                    return;
+                  }
                   const bool exact_in = oracle::contains(ps, p);
                   j.v.relation = in ? Relation::Contained : Relation::Separated;
                   if (in != exact_in) {
@@ -333,9 +342,7 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
 
 template <Scalar T>
 Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<T>& x) {
-  return judged(pair_context(a, x, b, x), [&](Judgement& j) {
-    const oracle::Placed pa = oracle::placed(a, x), pb = oracle::placed(b, x);
-    j.v.relation = placed_relation(pa, pb);
+  return judged_pair(a, x, b, x, [&](Judgement& j, const oracle::Placed& pa, const oracle::Placed& pb) {
     const bool exact = exact_image<double>(a, x) && exact_image<double>(b, x);
     const bool world = overlaps(a, b), moved = overlaps(a, x, b, x);
     j.note(std::string(exact ? "exact" : "rounded") + " placement; overlaps " + yes(world) + " -> " + yes(moved));
