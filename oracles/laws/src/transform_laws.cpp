@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -416,9 +417,10 @@ Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& o
 template <Scalar T>
 Verdict transform_rejection(std::span<const T> values) {
   const auto at = [&](std::size_t i) { return i < values.size() ? values[i] : T(0); };
-  std::string text = "values";
-  for (std::size_t i = 0; i < 5; ++i) text += " " + num(double(at(i)));
-  return judged(text, [&](Judgement& j) {
+  std::ostringstream text;  // a stream: g++ 12 warns falsely (-Wrestrict) on strings grown in a loop
+  text << "values";
+  for (std::size_t i = 0; i < 5; ++i) text << ' ' << num(double(at(i)));
+  return judged(text.str(), [&](Judgement& j) {
     const Vec2<T> p(at(0), at(1)), r(at(3), at(4));
     // The first bad value in argument order names the error.
     const auto expect_values = [&](std::initializer_list<T> vals) -> std::optional<std::pair<Error, long>> {
