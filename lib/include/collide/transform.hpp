@@ -122,10 +122,15 @@ class Transform {
   /// The stored values in the computation type.
   detail::Pose pose() const noexcept { return detail::Pose{widen(p_), widen(q_)}; }
 
+  /// The same transform with double values, bit for bit (exact: every float is a double).
+  Transform<double> widened() const noexcept { return Transform<double>(widen(p_), widen(q_)); }
+
   /// Same stored values.
   friend bool operator==(const Transform& a, const Transform& b) noexcept { return a.p_ == b.p_ && a.q_ == b.q_; }
 
  private:
+  template <Scalar U>
+  friend class Transform;
   Transform(const Vec2<T>& p, const Vec2<T>& q) noexcept : p_(p), q_(q) {}
   Vec2<T> p_;
   Vec2<T> q_;
