@@ -164,13 +164,19 @@ def planted_fault(name: str) -> Mutant:
     return faults[name]
 
 
-def planted_header(name: str) -> tuple[str, str]:
-    """(path relative to lib/include, patched text) of the planted fault `name`."""
-    mu = planted_fault(name)
-    text = (ROOT / mu.path).read_text()
-    if text.count(mu.original) != 1:
-        raise ListError(f"[{mu.name}] {mu.path}: original text found {text.count(mu.original)} times (need exactly 1)")
-    return mu.path.removeprefix("lib/include/"), text.replace(mu.original, mu.mutated)
+def planted_headers(names: str) -> dict[str, str]:
+    """Path relative to lib/include -> patched text, for the planted faults `names` (comma-separated;
+    several faults in one header are applied in turn)."""
+    out: dict[str, str] = {}
+    for name in names.split(","):
+        mu = planted_fault(name)
+        rel = mu.path.removeprefix("lib/include/")
+        text = out.get(rel) or (ROOT / mu.path).read_text()
+        if text.count(mu.original) != 1:
+            raise ListError(f"[{mu.name}] {mu.path}: original text found {text.count(mu.original)} times "
+                            "(need exactly 1)")
+        out[rel] = text.replace(mu.original, mu.mutated)
+    return out
 
 
 def write_if_changed(path: pathlib.Path, text: str) -> None:
@@ -283,7 +289,8 @@ def main() -> int:
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("COLLIDE_JOBS", "2")))
     ap.add_argument("--goal", type=float, default=10.0, help="seconds of checks within which each mutant must die")
     ap.add_argument("--check", action="store_true", help="only check that every mutant applies, then stop")
-    ap.add_argument("--planted", metavar="NAME", help="write the planted fault NAME (with --out) or its path")
+    ap.add_argument("--planted", metavar="NAMES",
+                    help="write the planted faults NAMES (comma-separated; with --out) or their header paths")
     ap.add_argument("--out", metavar="DIR", help="with --planted: the include directory to write into")
     ap.add_argument("--print-path", action="store_true", help="with --planted: print the header's path in DIR")
     args = ap.parse_args()
@@ -293,10 +300,11 @@ def main() -> int:
             # The path alone does not check the text: the mutation build configures a tree whose
             # headers carry mutant switches, and never builds the planted targets.
             if args.print_path:
-                print(planted_fault(args.planted).path.removeprefix("lib/include/"))
+                paths = {planted_fault(n).path.removeprefix("lib/include/") for n in args.planted.split(",")}
+                print("\n".join(sorted(paths)))
             elif args.out:
-                rel, text = planted_header(args.planted)
-                write_if_changed(pathlib.Path(args.out) / rel, text)
+                for rel, text in planted_headers(args.planted).items():
+                    write_if_changed(pathlib.Path(args.out) / rel, text)
             else:
                 raise ListError("--planted needs --out DIR or --print-path")
             return 0
@@ -304,7 +312,7 @@ def main() -> int:
         patched = patch_sources(mutants, ROOT)
         planted = parse_list(PLANTED)
         for mu in planted:
-            planted_header(mu.name)
+            planted_headers(mu.name)
     except ListError as e:
         print(f"mutate: {e}", file=sys.stderr)
         return 2

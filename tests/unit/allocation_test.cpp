@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <limits>
 #include <new>
 #include <string>
 
@@ -89,6 +90,24 @@ void check_pair_queries() {
       keep(rounding_tolerance(a, b));
       keep(resolve_margin(a, b, T(1)));
     });
+    // The same queries on local shapes placed by transforms: a rotated one, a translation, and
+    // the identity, in both orders (compounds are imaged child by child, never copied).
+    const Transform<T> xa(Vec2<T>(T(0.25), T(-0.5)), T(0.7)), xb(Vec2<T>(T(0.25), T(-0.5)), T(0));
+    for (const Transform<T>& x : {xa, xb, Transform<T>()}) {
+      expect_none("transformed queries", [&] {
+        keep(overlaps(a, x, b, xb));
+        keep(overlaps(vb, xb, va, x));
+        keep(contact(a, x, b, xb));
+        keep(contact(vb, xb, va, x));
+        keep(resolve(a, x, b, xb));
+        keep(resolve(vb, xb, va, x));
+        keep(distance(a, x, b, xb));
+        keep(distance(vb, xb, va, x));
+        keep(overlap_tolerance(a, x, b, xb));
+        keep(rounding_tolerance(a, x, b, xb));
+        keep(resolve_margin(a, x, b, xb, T(1)));
+      });
+    }
   }
 }
 
@@ -117,6 +136,18 @@ void check_shape_queries() {
               keep(bounds(vs));
             }))
       << "bounds " << label;
+  const Transform<T> x(Vec2<T>(T(3), T(1)), T(2.1));
+  EXPECT_EQ(0, allocations_in([&] {
+              keep(raycast(s, x, hit, T(100)));
+              keep(raycast(vs, x, miss, T(100)));
+              keep(contains(s, x, Vec2<T>(T(1), T(-2))));
+              keep(contains(vs, x, Vec2<T>(T(9), T(9))));
+              keep(bounds(s, x));
+              keep(bounds(vs, x));
+              keep(transform_tolerance(s, x));
+              keep(raycast_tolerance(s, x, hit));
+            }))
+      << "transformed shape queries " << label;
   if constexpr (K != ShapeKind::Compound) {
     // A compound owns its children: moving one builds a new list. Every primitive moves in place.
     EXPECT_EQ(0, allocations_in([&] {
@@ -153,6 +184,16 @@ TYPED_TEST(Allocation, SuccessfulFactoriesDoNotAllocate) {
               keep(Capsule<T>::make(V(0, 0), V(3, 1), T(0.5)));
               keep(ConvexPolygon<T>::make(std::span<const V>(octagon)));
               keep(ConvexPolygon<T>::make_hull(std::span<const V>(cloud)));
+            }));
+  // Transform updates: every factory, and moving one.
+  EXPECT_EQ(0, allocations_in([&] {
+              const auto x = Transform<T>::make(V(1, 2), T(0.7));
+              keep(x);
+              keep(Transform<T>::make_with_rotation(V(1, 2), V(3, 4)));
+              keep(Transform<T>::make_with_rotation(V(1, 2), V(0, 0)));  // ZeroRotation
+              keep(Transform<T>::make_translation(V(5, 6)));
+              keep(x->moved(V(1, 1)));
+              keep(Transform<T>::make(V(1, 2), std::numeric_limits<T>::quiet_NaN()));  // NonFinite
             }));
 }
 

@@ -137,7 +137,8 @@ TYPED_TEST(Raycast, CompoundNearestChild) {
   expect_hit(comp, ray<T>(2, 0, 1, 0), T(100), 1, 3, 0, -1, 0);
   expect_hit(comp, ray<T>(2, 0, -1, 0), T(100), 1, 1, 0, 1, 0);   // circle child
   EXPECT_FALSE(raycast(comp, ray<T>(2, 5, 1, 0), T(100)).has_value());  // bounds early-out
-  expect_hit(Shape<T>(comp), ray<T>(10, 0, -1, 0), T(100), 6, 4, 0, 1, 0);  // variant dispatch
+  const std::vector<Shape<T>> whole = {comp};
+  expect_hit(whole[0], ray<T>(10, 0, -1, 0), T(100), 6, 4, 0, 1, 0);  // variant dispatch
 }
 
 TYPED_TEST(Raycast, FarHugeAndTinyInputsStayFinite) {

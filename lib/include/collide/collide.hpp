@@ -1,16 +1,18 @@
 #pragma once
 /// @file collide.hpp
-/// Umbrella header: shapes, the registry and every query (overlaps, contact, resolve, distance,
-/// bounds, contains, raycast). The broadphase has its own header, collide/broadphase.hpp.
+/// Umbrella header: shapes, transforms, the registry and every query (overlaps, contact, resolve,
+/// distance, bounds, contains, raycast), world-space and transformed. The broadphase has its own header, collide/broadphase.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/config.hpp"
 #include "collide/contains.hpp"
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
+#include "collide/image.hpp"
 #include "collide/predicates.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"
 #include "collide/registry.hpp"
 #include "collide/shapes.hpp"
 #include "collide/transform.hpp"
+#include "collide/transformed.hpp"

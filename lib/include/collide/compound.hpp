@@ -2,10 +2,13 @@
 /// @file compound.hpp
 /// Conservative bounding boxes of the primitives, and Compound, which caches the box of its children.
 
+#include "collide/image.hpp"
 #include "collide/shapes.hpp"
+#include "collide/transform.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -73,35 +76,103 @@ Aabb<T> bounds(const Primitive<T>& s) noexcept {
   return std::visit([](const auto& x) { return bounds(x); }, s);
 }
 
-/// A body made of several shapes (a "list of geometries"): the union of its children, with a cached bounding box that
-/// every query checks before looking at any child.
+namespace detail {
+
+/// Largest absolute coordinate of a box: the scale of the rounding errors of what lies in it.
+template <Scalar T>
+Calc box_scale(const Aabb<T>& b) noexcept {
+  return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
+}
+
+/// Conservative box, in T, of the image of primitive s under x, an image whose points are within
+/// tol of the exact image's: the rounded image's box padded by tol and rounded outward.
+template <Scalar T, class P>
+Aabb<T> placed_bounds(const P& s, const Pose& x, Calc tol) {
+  return with_image(s, x, [&](const auto& img) {
+    const Aabb<Calc> b = bounds(img);
+    return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
+  });
+}
+
+}  // namespace detail
+
+/// A body made of several shapes (a "list of geometries"): the union of its children, each placed
+/// in the body's frame by its own transform (the identity unless given), with a cached bounding box
+/// that every query checks before looking at any child.
 template <Scalar T>
 class Compound {
  public:
+  /// One child and its placement in the compound's frame.
+  struct Child {
+    Primitive<T> shape;       ///< the child in its own local frame
+    Transform<T> transform;   ///< where the child sits in the compound's frame (identity by default)
+  };
+
+  /// Children placed where their values say (every child transform the identity).
   /// Errors: EmptyCompound. Children are valid by construction.
   static Expected<Compound> make(std::vector<Primitive<T>> children) {
     if (children.empty()) return ShapeError(Error::EmptyCompound, -1, "compound has no children");
     Vec2<T> lo = collide::bounds(children[0]).min(), hi = collide::bounds(children[0]).max();
+    Calc extent = 0;
     for (const Primitive<T>& c : children) {
       const Aabb<T> b = collide::bounds(c);
       lo = lo.cwiseMin(b.min());
       hi = hi.cwiseMax(b.max());
+      extent = std::max(extent, 2 * detail::box_scale(b));
     }
     // Unchecked: children's boxes may exceed max_magnitude<T>() (see AabbAccess).
-    return Compound(std::move(children), detail::AabbAccess::unchecked<T>(lo, hi));
+    return Compound(std::move(children), {}, detail::AabbAccess::unchecked<T>(lo, hi), extent);
+  }
+  /// Children with their own transforms (the image of each child under its transform, as a
+  /// transformed query defines it). Errors: EmptyCompound. Allocates (the compound owns its children).
+  static Expected<Compound> make_placed(std::vector<Child> children) {
+    if (children.empty()) return ShapeError(Error::EmptyCompound, -1, "compound has no children");
+    bool placed = false;
+    for (const Child& c : children) placed = placed || !c.transform.is_identity();
+    std::vector<Primitive<T>> shapes;
+    shapes.reserve(children.size());
+    for (Child& c : children) shapes.push_back(std::move(c.shape));
+    if (!placed) return make(std::move(shapes));
+    std::vector<Transform<T>> xf;
+    xf.reserve(children.size());
+    Calc extent = 0;
+    std::optional<Aabb<T>> box;
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      xf.push_back(children[i].transform);
+      const detail::Pose x = children[i].transform.pose();
+      const Calc local = std::visit([](const auto& s) { return detail::box_scale(collide::bounds(s)); }, shapes[i]);
+      extent = std::max(extent, x.p.cwiseAbs().maxCoeff() + 2 * local);
+      const Aabb<T> b = std::visit(
+          [&](const auto& s) { return detail::placed_bounds<T>(s, x, detail::image_tolerance(x, local)); }, shapes[i]);
+      box = box ? detail::AabbAccess::unchecked<T>(box->min().cwiseMin(b.min()), box->max().cwiseMax(b.max())) : b;
+    }
+    return Compound(std::move(shapes), std::move(xf), *box, extent);
   }
   /// As make(), throwing the ShapeError.
   explicit Compound(std::vector<Primitive<T>> children) : Compound(make(std::move(children)).value()) {}
 
-  /// The children, in the order given.
+  /// The children, in the order given, each in its own local frame (see child_transform()).
   const std::vector<Primitive<T>>& children() const noexcept { return children_; }
-  /// Cached conservative bounding box of all children.
+  /// Where child i sits in the compound's frame: the identity unless given. Precondition:
+  /// i < children().size().
+  Transform<T> child_transform(std::size_t i) const noexcept {
+    return transforms_.empty() ? Transform<T>() : transforms_[i];
+  }
+  /// True when some child has a transform other than the identity.
+  bool has_child_transforms() const noexcept { return !transforms_.empty(); }
+  /// Cached conservative bounding box of all children (placed), in the compound's frame.
   const Aabb<T>& bounds() const noexcept { return bounds_; }
+  /// The local magnitude L of transform_tolerance(): the largest over the children of
+  /// |child position|_inf + 2 * (largest absolute coordinate of the child's own box).
+  Calc local_extent() const noexcept { return extent_; }
 
  private:
-  Compound(std::vector<Primitive<T>> c, const Aabb<T>& b) : children_(std::move(c)), bounds_(b) {}
+  Compound(std::vector<Primitive<T>> c, std::vector<Transform<T>> x, const Aabb<T>& b, Calc extent)
+      : children_(std::move(c)), transforms_(std::move(x)), bounds_(b), extent_(extent) {}
   std::vector<Primitive<T>> children_;
+  std::vector<Transform<T>> transforms_{};  // empty when every child is placed by the identity
   Aabb<T> bounds_;
+  Calc extent_ = 0;
 };
 
 /// The compound's cached box (the union of its children's boxes).
@@ -111,3 +182,31 @@ Aabb<T> bounds(const Compound<T>& s) noexcept {
 }
 
 }  // namespace collide
+
+namespace collide::detail {
+
+/// A compound placed by a body pose, as queries see it: nothing is copied; each child is imaged
+/// under the body pose composed with its own transform when visited.
+template <Scalar T>
+struct PlacedCompound {
+  const Compound<T>* compound;  ///< the local compound
+  Pose pose;                    ///< the body's placement
+  Aabb<Calc> box;               ///< conservative world box (the local box's image, padded)
+};
+
+/// The compound under x with its world box.
+template <Scalar T>
+PlacedCompound<T> placed(const Compound<T>& c, const Pose& x) {
+  const Aabb<T>& b = c.bounds();
+  const Calc tol = image_tolerance(x, c.local_extent());
+  const Aabb<Calc> box = placed_bounds<Calc>(ShapeAccess::aabb<Calc>(widen(b.min()), widen(b.max())), x, tol);
+  return PlacedCompound<T>{&c, x, box};
+}
+
+/// The world box of a placed compound.
+template <Scalar T>
+const Aabb<Calc>& bounds(const PlacedCompound<T>& s) noexcept {
+  return s.box;
+}
+
+}  // namespace collide::detail

@@ -43,13 +43,15 @@ bool contains_concrete(const ConvexPolygon<T>& s, const Vec2c& p) noexcept {
   }
   return true;
 }
-template <Scalar T>
-bool contains_concrete(const Compound<T>& s, const Vec2c& p) {
-  if (!contains_concrete(s.bounds(), p)) return false;  // bounds are conservative: exact early-out
-  for (const Primitive<T>& c : s.children()) {
-    if (std::visit([&](const auto& x) { return contains_concrete(x, p); }, c)) return true;
-  }
-  return false;
+/// A compound, stored or placed: its box first (conservative, so an exact early-out), then each
+/// child as placed.
+template <class S>
+  requires is_compound_v<S>
+bool contains_concrete(const S& s, const Vec2c& p) {
+  if (!contains_concrete(calc_bounds(s), p)) return false;
+  bool in = false;
+  for_each_primitive(s, [&](const auto& x) { in = in || contains_concrete(x, p); });
+  return in;
 }
 
 }  // namespace detail

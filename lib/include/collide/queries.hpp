@@ -10,13 +10,22 @@
 /// Error contract (the one definition; README and the oracle properties refer to it):
 /// - S(a, b) = the largest absolute coordinate of bounds(a) and bounds(b).
 /// - overlaps(a, b) is exact for every pair and both scalars: it equals the exact answer for the
-///   stored values, touching included (decide.hpp); overlap_tolerance(a, b) = 0.
+///   stored values, touching included (decide.hpp); overlap_tolerance(a, b) = 0 (except for
+///   compounds with child transforms, below).
 /// - rounding_tolerance(a, b) = 64 * 2^-53 * S + 2^-500 is the error unit of the rounded outputs
 ///   (contact depth, normal and points, distance, resolution margin).
 /// - contact(a, b) exists exactly when overlaps(a, b) is true.
 /// - Tiny shapes (every value below 2^-400) have their rounded outputs computed on exactly
 ///   rescaled cores, so those are relative-accurate; the 2^-500 floor is a bound.
 /// - contains() is exact for every kind (contains.hpp); raycast() states its bound in raycast.hpp.
+/// - Shapes placed by transforms (transformed.hpp, every query with a Transform per shape): the
+///   exact shape is the exact image of the stored values; the identity computes nothing and
+///   gives these answers. Otherwise the image is rounded in double within transform_tolerance(s,
+///   x) = 16 * 2^-53 * (|position|_inf + 2 L) + 2^-1070 (L the local magnitude; 0 for the
+///   identity), exact for exact translations and quarter turns: overlaps() is exact outside a
+///   band of the two transform_tolerance()s, and rounded outputs add them to their bound. A
+///   compound whose children carry transforms is placed the same way in world space
+///   (placement_tolerance(), included in overlap_tolerance() and rounding_tolerance()).
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
@@ -39,21 +48,36 @@ namespace collide {
 
 namespace detail {
 
-/// The pair decision for two primitives in either order.
+/// The pair decision for two primitives in either order. A stored float shape met by a double
+/// image (a transformed query) is widened first, exactly.
 template <PrimitiveShape A, PrimitiveShape B>
 bool decide_primitives(const A& a, const B& b) {
-  if constexpr (static_cast<int>(kind_of_v<A>) <= static_cast<int>(kind_of_v<B>)) {
+  if constexpr (!std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>) {
+    if constexpr (std::is_same_v<scalar_of_t<A>, float>) {
+      return decide_primitives(widened_shape(a), b);
+    } else {
+      return decide_primitives(a, widened_shape(b));
+    }
+  } else if constexpr (static_cast<int>(kind_of_v<A>) <= static_cast<int>(kind_of_v<B>)) {
     return decide::pair(a, b);
   } else {
     return decide::pair(b, a);
   }
 }
 
-template <ConcreteShape A, ConcreteShape B>
+/// A shape's conservative box with double values (exact for a float box).
+template <class S>
+Aabb<Calc> calc_bounds(const S& s) {
+  const auto b = bounds(s);
+  return ShapeAccess::aabb<Calc>(widen(b.min()), widen(b.max()));
+}
+
+/// The overlap decision for concrete shapes, stored or placed (images, placed compounds).
+template <class A, class B>
 bool overlaps_concrete(const A& a, const B& b) {
   if constexpr (is_compound_v<A> || is_compound_v<B>) {
     // A hierarchy: the cheap bounding boxes first, then the children.
-    if (!decide::aabb_aabb(bounds(a), bounds(b))) return false;
+    if (!decide::aabb_aabb(calc_bounds(a), calc_bounds(b))) return false;
     bool hit = false;
     for_each_primitive(a, [&](const auto& ca) {
       if (hit) return;
@@ -77,20 +101,36 @@ bool overlaps(const A& a, const B& b) {
   });
 }
 
+/// The error bound of the placement of s in the world (see the contract at the top of this file):
+/// 0 for a stored shape and for a compound whose children are all placed by the identity;
+/// transform_tolerance(c, identity) for a compound with child transforms.
+template <AnyShape S>
+Calc placement_tolerance(const S& s) noexcept {
+  return detail::visit_shape(s, [](const auto& x) -> Calc {
+    if constexpr (detail::is_compound_v<decltype(x)>) {
+      return x.has_child_transforms() ? detail::image_tolerance(detail::Pose{}, x.local_extent()) : 0;
+    } else {
+      return 0;
+    }
+  });
+}
+
 /// The error unit of this pair's rounded outputs (contact depth, normal and points, distance,
 /// resolution margin): 64 * 2^-53 * S + 2^-500, where S is the largest absolute coordinate of
-/// either bounding box. Each query states its bound as a multiple of it.
+/// either bounding box, plus the placement tolerance of compounds with child transforms. Each
+/// query states its bound as a multiple of it.
 template <AnyShape A, AnyShape B>
 Calc rounding_tolerance(const A& a, const B& b) {
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
-  return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor;
+  return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor + placement_tolerance(a) + placement_tolerance(b);
 }
 
-/// The error bound of overlaps() for this pair: 0, since every pair is decided exactly (the band
-/// of exact signed distance around touching inside which an answer could differ is empty).
+/// The error bound of overlaps() for this pair: the width of the band of exact signed distance
+/// around touching inside which an answer may differ from the exact one. 0 for stored shapes,
+/// every pair being decided exactly; the placement tolerance of a compound with child transforms.
 template <AnyShape A, AnyShape B>
-Calc overlap_tolerance(const A&, const B&) noexcept {
-  return 0;
+Calc overlap_tolerance(const A& a, const B& b) noexcept {
+  return placement_tolerance(a) + placement_tolerance(b);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -117,7 +157,7 @@ Contact<T> to_scalar(const CoreContact& c) {
   return out;
 }
 
-template <ConcreteShape A, ConcreteShape B>
+template <class A, class B>
 std::optional<CoreContact> contact_concrete(const A& a, const B& b) {
   if (!overlaps_concrete(a, b)) return std::nullopt;
   std::optional<CoreContact> best;
@@ -133,18 +173,27 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b) {
 
 }  // namespace detail
 
+namespace detail {
+
+/// contact() with its result in T, for shapes stored or placed.
+template <Scalar T, class A, class B>
+std::optional<Contact<T>> contact_as(const A& a, const B& b) {
+  const std::optional<CoreContact> c = visit_shape(a, [&](const auto& ca) {
+    return visit_shape(b, [&](const auto& cb) { return contact_concrete(ca, cb); });
+  });
+  if (!c) return std::nullopt;
+  return to_scalar<T>(*c);
+}
+
+}  // namespace detail
+
 /// Contact of two shapes: present exactly when overlaps(a, b). For a compound, the deepest contact
 /// among its overlapping child pairs. Coincident circle centres give normal (1, 0).
 /// Error: normal and depth are rounded results (depth within a few rounding_tolerance of exact).
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
-  using T = scalar_of_t<A>;
-  const std::optional<detail::CoreContact> c = detail::visit_shape(a, [&](const auto& ca) {
-    return detail::visit_shape(b, [&](const auto& cb) { return detail::contact_concrete(ca, cb); });
-  });
-  if (!c) return std::nullopt;
-  return detail::to_scalar<T>(*c);
+  return detail::contact_as<scalar_of_t<A>>(a, b);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -174,7 +223,7 @@ Vec2<T> round_toward_zero(const Vec2c& v) noexcept {
 /// tol covers the rounding of the supports, of n and of a + v to T: shadows that miss by less
 /// may still meet. (Without it, a needle lying on a capsule child's own line, 1e-9 from a circle
 /// child, was pushed out of the circle and onto the capsule.)
-template <ConcreteShape A, ConcreteShape B>
+template <class A, class B>
 Calc push_along(const A& a, const B& b, const Vec2c& n, Calc tol) {
   const Vec2c side = perp(n);
   Calc t = 0;
@@ -193,17 +242,28 @@ Calc push_along(const A& a, const B& b, const Vec2c& n, Calc tol) {
 /// Whether a, moved by v and rounded to T as translated() would, still overlaps b; nullopt when
 /// the move has no representation in T (translated() would return an error). A compound is
 /// judged child by child, so that no moved copy of it is built (which would allocate).
-template <ConcreteShape A, ConcreteShape B>
+template <ConcreteShape A, class B>
 std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, const B& b) {
   if constexpr (is_compound_v<A>) {
+    const auto& kids = a.children();
     bool representable = true;
-    for (const auto& child : a.children()) {
-      std::visit([&](const auto& c) { representable = representable && bool(translated(c, v)); }, child);
+    for (std::size_t i = 0; i < kids.size(); ++i) {
+      if (a.child_transform(i).is_identity()) {
+        std::visit([&](const auto& c) { representable = representable && bool(translated(c, v)); }, kids[i]);
+      } else {
+        representable = representable && bool(a.child_transform(i).moved(v));
+      }
     }
     if (!representable) return std::nullopt;
     bool any = false;
-    for (const auto& child : a.children()) {
-      std::visit([&](const auto& c) { any = any || overlaps_concrete(translated(c, v).value(), b); }, child);
+    for (std::size_t i = 0; i < kids.size() && !any; ++i) {
+      if (a.child_transform(i).is_identity()) {
+        std::visit([&](const auto& c) { any = overlaps_concrete(translated(c, v).value(), b); }, kids[i]);
+      } else {
+        const Pose x = a.child_transform(i).moved(v)->pose();
+        std::visit([&](const auto& c) { any = with_image(c, x, [&](const auto& img) { return overlaps_concrete(img, b); }); },
+                   kids[i]);
+      }
     }
     return any;
   } else {
@@ -215,24 +275,94 @@ std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, co
 
 }  // namespace detail
 
-/// The margin resolve() adds beyond the computed depth: 4 * 64 * 2^-53 * S (four times the
-/// relative part of rounding_tolerance), plus 8 eps_T (S + depth), which covers rounding a's moved
-/// coordinates to T, plus 16 subnormal units of double and two of T for rounding near zero (a
-/// push along a diagonal moves each coordinate by a whole unit: sqrt(2) units in all).
-/// It has no 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
+namespace detail {
+
+/// The margin formula with its magnitudes given: s_pair the computation's scale (the largest
+/// coordinate the depth was computed from), s_moved the largest coordinate of the moved shape's
+/// stored values (what is rounded to T when it moves).
+template <Scalar T>
+Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
+  return 4 * kOverlapErrorFactor * 0x1p-53 * s_pair + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) +
+         16 * 0x1p-1074 + 2 * Calc(std::numeric_limits<T>::denorm_min());
+}
+
+}  // namespace detail
+
+/// The margin resolve() adds beyond the computed depth, from the magnitudes that round:
+/// 4 * 64 * 2^-53 * S (four times the relative part of rounding_tolerance: the depth is computed
+/// in double from both shapes' coordinates, S as in rounding_tolerance), plus 8 eps_T (S_a +
+/// depth), where S_a is the largest absolute coordinate of bounds(a) alone: it covers rounding
+/// a's moved coordinates (each within S_a + depth) to T, and does not grow with b's extent. Plus 16
+/// subnormal units of double and two of T for rounding near zero (a push along a diagonal moves
+/// each coordinate by a whole unit: sqrt(2) units in all), plus 2 placement_tolerance of each
+/// shape (a compound with child transforms is imaged once for the depth and once for the test).
+/// No 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
 /// relative-accurate, and a push of 2^-500 would collapse a subnormal polygon.
 template <AnyShape A, AnyShape B>
 Calc resolve_margin(const A& a, const B& b, Calc depth) {
   using T = scalar_of_t<A>;
-  const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
-  return 4 * kOverlapErrorFactor * 0x1p-53 * s + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s + depth) +
-         16 * 0x1p-1074 + 2 * Calc(std::numeric_limits<T>::denorm_min());
+  const Calc sa = detail::scale_of(bounds(a));
+  const Calc s = std::max(sa, detail::scale_of(bounds(b)));
+  return detail::margin_of<T>(s, sa, depth) + 2 * (placement_tolerance(a) + placement_tolerance(b));
 }
+
+namespace detail {
+
+/// Whether a push must be checked by testing the moved shape: only where rounding can defeat the
+/// margin's proof. A rigid primitive (circle, box, capsule) moved by v has every stored coordinate
+/// rounded by at most eps_T / 2 (S_a + |v|), which the margin covers; a polygon may be replaced by
+/// the hull of its rounded vertices (translated()), and a compound's push is the support gap of
+/// every child it meets, so those two are tested.
+template <class A>
+struct PushNeedsTest : std::bool_constant<is_compound_v<A>> {};
+template <Scalar T>
+struct PushNeedsTest<ConvexPolygon<T>> : std::true_type {};
+template <class A>
+inline constexpr bool push_needs_test_v = PushNeedsTest<std::remove_cvref_t<A>>::value;
+
+/// resolve() on concrete shapes, stored or placed: the push in T. s_moved is the largest stored
+/// magnitude of a that a move rounds; extra is added to the margin (the placements' bound);
+/// still_overlaps(v) tests a moved by v (nullopt when the move has no representation in T).
+template <Scalar T, class A, class B, class Moved>
+Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& still_overlaps) {
+  if (!overlaps_concrete(ca, cb)) return Vec2<T>::Zero();
+  const Calc s_pair = std::max(scale_of(bounds(ca)), scale_of(bounds(cb)));
+  constexpr bool compound = is_compound_v<A> || is_compound_v<B>;
+  // A push is at most about the shapes' extent, 2 S.
+  const Calc shadow_tol = margin_of<T>(s_pair, s_pair, 2 * s_pair) + extra;
+  Vec2c best_n(1, 0);
+  Calc best_t = std::numeric_limits<Calc>::infinity();
+  for_each_primitive(ca, [&](const auto& pa) {
+    for_each_primitive(cb, [&](const auto& pb) {
+      if (!decide_primitives(pa, pb)) return;
+      const CoreContact c = contact_cores(core_of(pa), core_of(pb));
+      const Calc t = compound ? push_along(ca, cb, c.normal, shadow_tol) : c.depth;
+      if (t < best_t) {
+        best_t = t;
+        best_n = c.normal;
+      }
+    });
+  });
+  Calc margin = margin_of<T>(s_pair, s_moved, best_t) + extra;
+  Vec2<T> v = round_toward_zero<T>(-best_n * (best_t + margin));
+  if constexpr (push_needs_test_v<A> || push_needs_test_v<B>) {
+    for (int attempt = 0; attempt < 8; ++attempt) {
+      const std::optional<bool> still = still_overlaps(v);
+      if (!still || !*still) break;
+      margin *= 2;
+      v = round_toward_zero<T>(-best_n * (best_t + margin));
+    }
+  }
+  return v;
+}
+
+}  // namespace detail
 
 /// Minimum translation of a that separates it from b (the shortest push,
 /// as the course notes resolve penetration, generalised to every pair): zero if they do not overlap; otherwise -normal * (depth + margin), so a moved by
-/// it no longer overlaps b, strictly (margin: resolve_margin(); doubled up to 8 times if the moved
-/// shape still tests as overlapping after rounding to T).
+/// it no longer overlaps b, strictly (margin: resolve_margin(); when a polygon or a compound is
+/// involved, doubled up to 8 times if the moved shape still tests as overlapping after rounding
+/// to T — the other pairs need no test, the margin covering their rounding).
 ///
 /// Minimal for the 15 pairs of primitives (depth is the least penetration over the Minkowski
 /// difference's faces). For compounds the push is the smallest among the child contacts'
@@ -248,41 +378,32 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
   using T = scalar_of_t<A>;
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) -> Vec2<T> {
-      if (!detail::overlaps_concrete(ca, cb)) return Vec2<T>::Zero();
-      // A push is at most about the shapes' extent, 2 S.
-      const Calc scale = std::max(detail::scale_of(bounds(ca)), detail::scale_of(bounds(cb)));
-      const Calc shadow_tol = resolve_margin(ca, cb, 2 * scale);
-      Vec2c best_n(1, 0);
-      Calc best_t = std::numeric_limits<Calc>::infinity();
-      detail::for_each_primitive(ca, [&](const auto& pa) {
-        detail::for_each_primitive(cb, [&](const auto& pb) {
-          if (!detail::decide_primitives(pa, pb)) return;
-          const detail::CoreContact c = detail::contact_cores(detail::core_of(pa), detail::core_of(pb));
-          const Calc t = detail::is_compound_v<std::remove_cvref_t<decltype(ca)>> ||
-                                 detail::is_compound_v<std::remove_cvref_t<decltype(cb)>>
-                             ? detail::push_along(ca, cb, c.normal, shadow_tol)
-                             : c.depth;
-          if (t < best_t) {
-            best_t = t;
-            best_n = c.normal;
-          }
-        });
-      });
-      Calc margin = resolve_margin(ca, cb, best_t);
-      Vec2<T> v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
-      for (int attempt = 0; attempt < 8; ++attempt) {
-        const std::optional<bool> still = detail::moved_overlaps(ca, v, cb);
-        if (!still || !*still) break;
-        margin *= 2;
-        v = detail::round_toward_zero<T>(-best_n * (best_t + margin));
-      }
-      return v;
+      const Calc extra = 2 * (placement_tolerance(ca) + placement_tolerance(cb));
+      return detail::resolve_as<T>(ca, cb, detail::scale_of(bounds(ca)), extra,
+                                   [&](const Vec2<T>& v) { return detail::moved_overlaps(ca, v, cb); });
     });
   });
 }
 
 // ---------------------------------------------------------------------------------------------
 // Distance.
+
+namespace detail {
+
+/// distance() in T, for concrete shapes stored or placed.
+template <Scalar T, class A, class B>
+T distance_as(const A& ca, const B& cb) {
+  if (overlaps_concrete(ca, cb)) return T(0);
+  Calc best = std::numeric_limits<Calc>::infinity();
+  for_each_primitive(ca, [&](const auto& pa) {
+    for_each_primitive(cb, [&](const auto& pb) { best = std::min(best, core_gap(core_of(pa), core_of(pb))); });
+  });
+  // Separated (decided exactly): a gap that rounds to zero is reported as the least positive T.
+  const T gap = static_cast<T>(std::max(Calc(0), best));
+  return gap > T(0) ? gap : std::numeric_limits<T>::denorm_min();
+}
+
+}  // namespace detail
 
 /// Euclidean distance between the closed shapes: 0 exactly when they overlap, otherwise the gap,
 /// at least the smallest positive T (a separated pair whose gap rounds to 0 is not reported as
@@ -292,18 +413,7 @@ template <AnyShape A, AnyShape B>
 scalar_of_t<A> distance(const A& a, const B& b) {
   using T = scalar_of_t<A>;
   return detail::visit_shape(a, [&](const auto& ca) {
-    return detail::visit_shape(b, [&](const auto& cb) -> T {
-      if (detail::overlaps_concrete(ca, cb)) return T(0);
-      Calc best = std::numeric_limits<Calc>::infinity();
-      detail::for_each_primitive(ca, [&](const auto& pa) {
-        detail::for_each_primitive(cb, [&](const auto& pb) {
-          best = std::min(best, detail::core_gap(detail::core_of(pa), detail::core_of(pb)));
-        });
-      });
-      // Separated (decided exactly): a gap that rounds to zero is reported as the least positive T.
-      const T gap = static_cast<T>(std::max(Calc(0), best));
-      return gap > T(0) ? gap : std::numeric_limits<T>::denorm_min();
-    });
+    return detail::visit_shape(b, [&](const auto& cb) { return detail::distance_as<T>(ca, cb); });
   });
 }
 

@@ -227,20 +227,28 @@ std::optional<UnitRayHit> ray_primitive(const P& shape, const UnitRay& ray) {
   return h;
 }
 
-template <ConcreteShape S>
+template <class S>
 std::optional<UnitRayHit> ray_concrete(const S& shape, const UnitRay& ray) {
   if constexpr (is_compound_v<S>) {
-    const Aabb<scalar_of_t<S>>& box = shape.bounds();
-    if (!ray_box_span(widen(box.min()), widen(box.max()), ray)) return std::nullopt;
+    const Aabb<Calc> box = calc_bounds(shape);
+    if (!ray_box_span(box.min(), box.max(), ray)) return std::nullopt;
     std::optional<UnitRayHit> best;
-    for (const auto& child : shape.children()) {
-      const std::optional<UnitRayHit> h = std::visit([&](const auto& x) { return ray_primitive(x, ray); }, child);
+    for_each_primitive(shape, [&](const auto& x) {
+      const std::optional<UnitRayHit> h = ray_primitive(x, ray);
       if (closer(h, best)) best = h;
-    }
+    });
     return best;
   } else {
     return ray_primitive(shape, ray);
   }
+}
+
+/// raycast_tolerance() without the placement term, for a shape with this bounding box.
+template <Scalar T>
+Calc ray_tolerance(const Aabb<T>& box, const Ray<T>& ray) {
+  const Calc m = std::max(scale_of(box), widen(ray.origin).cwiseAbs().maxCoeff());
+  return (kOverlapErrorFactor * kUnitRoundoff + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
+         Calc(std::numeric_limits<T>::denorm_min());
 }
 
 }  // namespace detail
@@ -249,26 +257,21 @@ std::optional<UnitRayHit> ray_concrete(const S& shape, const UnitRay& ray) {
 /// (64 * 2^-53 + 4 eps_T) * max(S, |origin|_inf) + 2^-500 + denorm_min_T.
 template <AnyShape S>
 Calc raycast_tolerance(const S& shape, const Ray<scalar_of_t<S>>& ray) {
-  using T = scalar_of_t<S>;
-  const Calc m = std::max(detail::scale_of(bounds(shape)), widen(ray.origin).cwiseAbs().maxCoeff());
-  return (kOverlapErrorFactor * kUnitRoundoff + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
-         Calc(std::numeric_limits<T>::denorm_min());
+  return detail::ray_tolerance<scalar_of_t<S>>(bounds(shape), ray) + placement_tolerance(shape);
 }
 
-/// First point of the closed shape along the ray with 0 <= t <= max_t, or nothing.
-/// t is in units of |direction|. NaN/inf anywhere in the ray or max_t, or max_t < 0: nothing.
-/// Compounds: bounding-box early-out, then the nearest child hit.
-/// Error: see raycast_tolerance() and the contract at the top of raycast.hpp.
-template <AnyShape S>
-std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray,
-                                              scalar_of_t<S> max_t) {
-  using T = scalar_of_t<S>;
+namespace detail {
+
+/// raycast() with its result in T, for a shape stored or placed (images, placed compounds).
+template <Scalar T, class S>
+std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) {
   const Vec2c o = widen(ray.origin), d = widen(ray.direction);
   const Calc tmax = max_t;
   if (!o.allFinite() || !d.allFinite() || !std::isfinite(tmax) || tmax < 0) return std::nullopt;
+  const bool inside = visit_shape(shape, [&](const auto& x) { return contains_concrete(x, o); });
   const Calc dm = d.cwiseAbs().maxCoeff();
   if (dm == 0) {
-    if (!contains(shape, ray.origin)) return std::nullopt;
+    if (!inside) return std::nullopt;
     return RayHit<T>{T(0), ray.origin, Vec2<T>::Zero()};
   }
   // Unit direction without overflow: scale by a power of two first (exact), then normalise.
@@ -277,19 +280,30 @@ std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_o
   const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
   const Calc len_s = ds.norm();  // |d| = len_s * 2^e
   const Vec2c u = ds / len_s;
-  if (contains(shape, ray.origin)) return RayHit<T>{T(0), ray.origin, Vec2<T>((-u).template cast<T>())};
+  if (inside) return RayHit<T>{T(0), ray.origin, Vec2<T>((-u).template cast<T>())};
 
-  detail::UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
-  const Calc m = std::max(detail::scale_of(bounds(shape)), o.cwiseAbs().maxCoeff());
+  UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
+  const Calc m = std::max(scale_of(calc_bounds(shape)), o.cwiseAbs().maxCoeff());
   r.pad = 4 * kUnitRoundoff * m + 16 * kSmallestDouble;  // no 2^-500 floor: tiny shapes are rescaled
-  const std::optional<detail::UnitRayHit> h =
-      detail::visit_shape(shape, [&](const auto& x) { return detail::ray_concrete(x, r); });
+  const std::optional<UnitRayHit> h = visit_shape(shape, [&](const auto& x) { return ray_concrete(x, r); });
   if (!h) return std::nullopt;
   // t = s / |d| = s / len_s * 2^-e, ordered so that neither step overflows (len_s is in [0.5, 1.5)).
   const Calc t = e > 0 ? std::ldexp(h->s, -e) / len_s : std::ldexp(h->s / len_s, -e);
   if (!(t <= tmax)) return std::nullopt;
   const Vec2c point = o + u * h->s;
   return RayHit<T>{static_cast<T>(t), point.template cast<T>(), h->normal.template cast<T>()};
+}
+
+}  // namespace detail
+
+/// First point of the closed shape along the ray with 0 <= t <= max_t, or nothing.
+/// t is in units of |direction|. NaN/inf anywhere in the ray or max_t, or max_t < 0: nothing.
+/// Compounds: bounding-box early-out, then the nearest child hit.
+/// Error: see raycast_tolerance() and the contract at the top of raycast.hpp.
+template <AnyShape S>
+std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray,
+                                              scalar_of_t<S> max_t) {
+  return detail::raycast_as<scalar_of_t<S>>(shape, ray, max_t);
 }
 
 }  // namespace collide

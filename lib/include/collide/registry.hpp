@@ -230,11 +230,11 @@ inline ConvexPolygon<double> widened(const ConvexPolygon<float>& s) {
 }
 /// The same shape with double storage (exact: the same point set).
 inline Compound<double> widened(const Compound<float>& s) {
-  std::vector<Primitive<double>> c;
-  for (const Primitive<float>& p : s.children()) {
-    std::visit([&](const auto& x) { c.emplace_back(widened(x)); }, p);
+  std::vector<Compound<double>::Child> c;
+  for (std::size_t i = 0; i < s.children().size(); ++i) {
+    std::visit([&](const auto& x) { c.push_back({widened(x), s.child_transform(i).widened()}); }, s.children()[i]);
   }
-  return Compound<double>(std::move(c));
+  return Compound<double>::make_placed(std::move(c)).value();
 }
 /// The same shape with double storage (exact: the same point set).
 inline Shape<double> widened(const Shape<float>& s) {

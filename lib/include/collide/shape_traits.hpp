@@ -63,18 +63,45 @@ decltype(auto) visit_shape(const S& s, F&& f) {
   }
 }
 
-/// Calls f with each primitive of s (s itself, or each child of a compound).
+template <class S>
+struct IsCompound : std::false_type {};
+template <Scalar T>
+struct IsCompound<Compound<T>> : std::true_type {};
+template <Scalar T>
+struct IsCompound<PlacedCompound<T>> : std::true_type {};
+
+/// A compound, local or placed by a body transform.
+template <class S>
+inline constexpr bool is_compound_v = IsCompound<std::remove_cvref_t<S>>::value;
+
+/// Calls f with the image of child i of c under `body` composed with the child's own transform
+/// (always an image in double, even of the identity: one set of placed types).
+template <Scalar T, class F>
+void visit_child(const Compound<T>& c, std::size_t i, const Pose& body, F&& f) {
+  const Pose x = c.has_child_transforms() ? compose(body, c.child_transform(i).pose()) : body;
+  std::visit([&](const auto& p) { with_image(p, x, f); }, c.children()[i]);
+}
+
+/// Calls f with each primitive of s (s itself, or each child of a compound, placed: a compound
+/// with child transforms is visited through its children's images).
 template <class S, class F>
 void for_each_primitive(const S& s, F&& f) {
   if constexpr (std::is_same_v<S, Compound<scalar_of_t<S>>>) {
-    for (const auto& child : s.children()) std::visit(f, child);
+    if (!s.has_child_transforms()) {
+      for (const auto& child : s.children()) std::visit(f, child);
+    } else {
+      for (std::size_t i = 0; i < s.children().size(); ++i) visit_child(s, i, Pose{}, f);
+    }
   } else {
     f(s);
   }
 }
-
-template <class S>
-inline constexpr bool is_compound_v = std::is_same_v<S, Compound<scalar_of_t<S>>>;
+/// @cond COLLIDE_SPECIALISATIONS
+template <Scalar T, class F>
+void for_each_primitive(const PlacedCompound<T>& s, F&& f) {
+  for (std::size_t i = 0; i < s.compound->children().size(); ++i) visit_child(*s.compound, i, s.pose, f);
+}
+/// @endcond
 
 }  // namespace detail
 

@@ -59,6 +59,7 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
 struct Unchecked {};
 struct ObbAccess;
 struct AabbAccess;
+struct ShapeAccess;
 
 inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
 
@@ -125,6 +126,7 @@ class Circle {
   T radius() const noexcept { return radius_; }
 
  private:
+  friend struct detail::ShapeAccess;
   Circle(detail::Unchecked, const Vec2<T>& c, T r) : center_(c), radius_(r) {}
   Vec2<T> center_;
   T radius_;
@@ -157,6 +159,7 @@ class Aabb {
   template <Scalar U>
   friend Aabb<U> bounds_from_calc(const Vec2c&, const Vec2c&) noexcept;
   friend struct detail::AabbAccess;
+  friend struct detail::ShapeAccess;
   Aabb(detail::Unchecked, const Vec2<T>& lo, const Vec2<T>& hi) : min_(lo), max_(hi) {}
   Vec2<T> min_;
   Vec2<T> max_;
@@ -239,6 +242,7 @@ class Obb {
 
  private:
   friend struct detail::ObbAccess;
+  friend struct detail::ShapeAccess;
   Obb(detail::Unchecked, const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u)
       : center_(c), half_(h), axis_(u) {}
   Vec2<T> center_;
@@ -294,6 +298,7 @@ class Capsule {
   T radius() const noexcept { return radius_; }
 
  private:
+  friend struct detail::ShapeAccess;
   Capsule(detail::Unchecked, const Vec2<T>& a, const Vec2<T>& b, T r) : a_(a), b_(b), radius_(r) {}
   Vec2<T> a_;
   Vec2<T> b_;
@@ -439,6 +444,7 @@ class ConvexPolygon {
   const Vec2<T>& operator[](std::size_t i) const noexcept { return vertices()[i]; }
 
  private:
+  friend struct detail::ShapeAccess;
   ConvexPolygon() = default;
   std::array<Vec2<T>, kInline> inline_{};
   std::vector<Vec2<T>> heap_;

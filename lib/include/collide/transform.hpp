@@ -17,8 +17,37 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace collide {
+
+namespace detail {
+
+/// A placement in the computation type: x -> R(q) x + p, each coordinate computed as
+/// (q.x * x.x - q.y * x.y) + p.x (and likewise for y), the order every image uses.
+struct Pose {
+  Vec2c p = Vec2c::Zero();  ///< position
+  Vec2c q = Vec2c(1, 0);    ///< rotation (cos, sin), as stored (|q| = 1 up to one rounding)
+
+  /// R(q) v.
+  Vec2c rotate(const Vec2c& v) const noexcept {
+    return {q.x() * v.x() - q.y() * v.y(), q.y() * v.x() + q.x() * v.y()};
+  }
+  /// R(q) x + p.
+  Vec2c apply(const Vec2c& x) const noexcept {
+    const Vec2c r = rotate(x);
+    return {r.x() + p.x(), r.y() + p.y()};
+  }
+  /// The pose identity: nothing to compute.
+  bool is_identity() const noexcept { return p.x() == 0 && p.y() == 0 && q.x() == 1 && q.y() == 0; }
+};
+
+/// outer after inner (a compound child placed in its body): x -> outer(inner(x)), rounded.
+inline Pose compose(const Pose& outer, const Pose& inner) noexcept {
+  return Pose{outer.apply(inner.p), outer.rotate(inner.q)};
+}
+
+}  // namespace detail
 
 /// A rigid placement: position plus rotation stored as (cosine, sine). Plain value, no allocation.
 template <Scalar T>
@@ -47,14 +76,23 @@ class Transform {
     const Vec2c r = widen(rotation);
     if (std::fabs(r.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
       return Transform(position, rotation);
-    const Calc len = std::hypot(r.x(), r.y());
-    if (!(len > 0)) return ShapeError(Error::ZeroRotation, -1, "transform rotation is the zero vector");
-    return Transform(position, (r / len).template cast<T>());
+    const std::optional<Vec2c> u = detail::normalized(r);
+    if (!u) return ShapeError(Error::ZeroRotation, -1, "transform rotation is the zero vector");
+    return Transform(position, u->template cast<T>());
   }
 
   /// A pure translation (rotation (1, 0)). Errors: NonFinite, OutOfRange (index 0, 1).
   static Expected<Transform> make_translation(const Vec2<T>& position) noexcept {
     return make_with_rotation(position, Vec2<T>(T(1), T(0)));
+  }
+
+  /// The same transform moved by v: position + v rounded to T, rotation kept bit for bit (a body
+  /// moving between frames). Errors: NonFinite, OutOfRange (index 0, 1).
+  Expected<Transform> moved(const Vec2<T>& v) const noexcept {
+    const Vec2<T> p = p_ + v;
+    ShapeError e = detail::placeholder_error();
+    if (!detail::check_values<T>({p.x(), p.y()}, &e)) return e;
+    return Transform(p, q_);
   }
 
   /// As make(), throwing the ShapeError.
@@ -68,22 +106,29 @@ class Transform {
   /// R(q) x + p for a local point, computed in Calc (double): each coordinate is within
   /// 2^-52 (|p| + |c x| + |s y|) of the exact image, and exact when every product and the sum
   /// are representable (exact translations, quarter turns of representable values).
-  Vec2c apply(const Vec2c& x) const noexcept { return rotate(x) + widen(p_); }
+  Vec2c apply(const Vec2c& x) const noexcept { return pose().apply(x); }
   /// R(q) v for a local direction, computed in Calc.
-  Vec2c rotate(const Vec2c& v) const noexcept {
-    const Calc c = q_.x(), s = q_.y();
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-  }
+  Vec2c rotate(const Vec2c& v) const noexcept { return pose().rotate(v); }
   /// The transpose R(q)^T v (the inverse rotation when |q| = 1), computed in Calc.
   Vec2c unrotate(const Vec2c& v) const noexcept {
     const Calc c = q_.x(), s = q_.y();
     return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
   }
 
+  /// True for position (0, 0) and rotation (1, 0): queries then use the stored shape itself.
+  bool is_identity() const noexcept { return pose().is_identity(); }
+  /// The stored values in the computation type.
+  detail::Pose pose() const noexcept { return detail::Pose{widen(p_), widen(q_)}; }
+
+  /// The same transform with double values, bit for bit (exact: every float is a double).
+  Transform<double> widened() const noexcept { return Transform<double>(widen(p_), widen(q_)); }
+
   /// Same stored values.
   friend bool operator==(const Transform& a, const Transform& b) noexcept { return a.p_ == b.p_ && a.q_ == b.q_; }
 
  private:
+  template <Scalar U>
+  friend class Transform;
   Transform(const Vec2<T>& p, const Vec2<T>& q) noexcept : p_(p), q_(q) {}
   Vec2<T> p_;
   Vec2<T> q_;

@@ -50,27 +50,35 @@ Expected<ConvexPolygon<T>> translated(const ConvexPolygon<T>& s, const Vec2<T>& 
   }
   return ConvexPolygon<T>::make_hull(moved.span());
 }
-/// Every child moved by v (allocates: the compound owns its children). Errors: the first child's
-/// error, as that child's factory names it.
+/// Every child moved by v (allocates: the compound owns its children): a child placed by the
+/// identity has its values moved, any other child its transform's position. Errors: the first
+/// child's error, as that child's factory (or Transform::moved) names it.
 template <Scalar T>
 Expected<Compound<T>> translated(const Compound<T>& s, const Vec2<T>& v) {
-  std::vector<Primitive<T>> moved;
+  std::vector<typename Compound<T>::Child> moved;
   moved.reserve(s.children().size());
-  for (const Primitive<T>& c : s.children()) {
+  for (std::size_t i = 0; i < s.children().size(); ++i) {
+    const Transform<T> x = s.child_transform(i);
+    if (!x.is_identity()) {
+      const Expected<Transform<T>> mx = x.moved(v);
+      if (!mx) return mx.error();
+      moved.push_back({s.children()[i], *mx});
+      continue;
+    }
     std::optional<ShapeError> err;
     std::visit(
-        [&](const auto& x) {
-          auto m = translated(x, v);
+        [&](const auto& c) {
+          auto m = translated(c, v);
           if (m) {
-            moved.emplace_back(std::move(m).value());
+            moved.push_back({Primitive<T>(std::move(m).value()), x});
           } else {
             err = m.error();
           }
         },
-        c);
+        s.children()[i]);
     if (err) return *err;
   }
-  return Compound<T>::make(std::move(moved));
+  return Compound<T>::make_placed(std::move(moved));
 }
 /// A variant translated: same alternative, moved by v. Errors: those of the shape's factory
 /// (NonFinite, OutOfRange when the move leaves the representable range; Collinear when rounding

@@ -54,7 +54,15 @@ struct Spec {
   Vec2d center{0, 0}, axis{1, 0};                   // OBB: corners center +- hx*u +- hy*v
   double hx = 0, hy = 0;
   double radius = 0;
+  /// Placements applied to every core point, first to last: x -> R(q) x + p with the stored q
+  /// (a compound child's own transform, then its body's), evaluated exactly.
+  boost::container::small_vector<std::pair<Vec2d, Vec2d>, 2> poses;
 };
+
+void require_pose(const Vec2d& p, const Vec2d& q) {
+  require_finite(p, "transform position");
+  require_finite(q, "transform rotation");
+}
 
 Spec spec_of(const Circle<double>& s) {
   require_finite(s.center(), "circle center");
@@ -132,19 +140,30 @@ struct Parts {
   bool compound = false;
 };
 
-Parts parts_of(const Shape<double>& s) {
+/// The primitives of a placed shape, each with its chain of placements (child, then body).
+Parts parts_of(const Placed& s) {
+  require_pose(s.position, s.rotation);
+  const bool body = !(s.position == Vec2d(0, 0) && s.rotation == Vec2d(1, 0));
   Parts out;
   std::visit(
       [&](const auto& x) {
         using S = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<S, Compound<double>>) {
           out.compound = true;
-          for (const Primitive<double>& c : x.children()) out.items.push_back(spec_of(c));
+          for (std::size_t i = 0; i < x.children().size(); ++i) {
+            Spec c = spec_of(x.children()[i]);
+            const Transform<double> t = x.child_transform(i);
+            if (!t.is_identity()) c.poses.emplace_back(t.position(), t.rotation());
+            out.items.push_back(std::move(c));
+          }
         } else {
           out.items.push_back(spec_of(x));
         }
       },
-      s);
+      s.shape);
+  if (body) {
+    for (Spec& c : out.items) c.poses.emplace_back(s.position, s.rotation);
+  }
   return out;
 }
 
@@ -191,9 +210,26 @@ P<NT> point_of(const Vec2d& p, const P<NT>* shift) {
   return {NT(p.x()), NT(p.y())};
 }
 
-/// The spec's rational vertices (moved by *shift when given).
+/// The spec's rational vertices, placed by its poses (exact), then moved by *shift when given.
+template <class NT>
+Core<NT> realize_local(const Spec& s, const P<NT>* shift);
+
 template <class NT>
 Core<NT> realize(const Spec& s, const P<NT>* shift = nullptr) {
+  if (s.poses.empty()) return realize_local<NT>(s, shift);
+  Core<NT> c = realize_local<NT>(s, nullptr);
+  for (const auto& [p, q] : s.poses) {
+    const NT px(p.x()), py(p.y()), qx(q.x()), qy(q.y());
+    for (P<NT>& v : c.v) v = P<NT>{NT(qx * v.x - qy * v.y + px), NT(qy * v.x + qx * v.y + py)};
+  }
+  if (shift) {
+    for (P<NT>& v : c.v) v = P<NT>{NT(v.x + shift->x), NT(v.y + shift->y)};
+  }
+  return c;
+}
+
+template <class NT>
+Core<NT> realize_local(const Spec& s, const P<NT>* shift) {
   Core<NT> c;
   c.radius = NT(s.radius);
   if (!s.is_obb) {
@@ -733,12 +769,12 @@ bool any_pair(const Parts& a, const Parts& b, F&& f) {
 
 namespace exact {
 
-bool overlaps(const Shape<double>& a, const Shape<double>& b) {
+bool overlaps(const Placed& a, const Placed& b) {
   const Parts pa = parts_of(a), pb = parts_of(b);
   return any_pair(pa, pb, [](const Spec& x, const Spec& y) { return prim_overlaps(x, y); });
 }
 
-bool contains(const Shape<double>& s, const Vec2<double>& p) {
+bool contains(const Placed& s, const Vec2<double>& p) {
   const Parts ps = parts_of(s);
   const Spec pt = point_spec(p);
   for (const Spec& x : ps.items) {
@@ -747,7 +783,7 @@ bool contains(const Shape<double>& s, const Vec2<double>& p) {
   return false;
 }
 
-int compare_distance(const Shape<double>& a, const Shape<double>& b, double d) {
+int compare_distance(const Placed& a, const Placed& b, double d) {
   require_finite(d, "distance");
   const Parts pa = parts_of(a), pb = parts_of(b);
   int best = 1;  // sign(min gap - d) = min over child pairs of sign(gap - d)
@@ -758,7 +794,7 @@ int compare_distance(const Shape<double>& a, const Shape<double>& b, double d) {
   return best;
 }
 
-bool within_band(const Shape<double>& a, const Shape<double>& b, double band) {
+bool within_band(const Placed& a, const Placed& b, double band) {
   require_finite(band, "band");
   const Parts pa = parts_of(a), pb = parts_of(b);
   const bool any_overlap = any_pair(pa, pb, [](const Spec& x, const Spec& y) { return prim_overlaps(x, y); });
@@ -771,20 +807,20 @@ bool within_band(const Shape<double>& a, const Shape<double>& b, double band) {
   return !deep;
 }
 
-bool separates(const Shape<double>& a, const Shape<double>& b, const Vec2<double>& t) {
+bool separates(const Placed& a, const Placed& b, const Vec2<double>& t) {
   require_finite(t, "translation");
   const Parts pa = parts_of(a), pb = parts_of(b);
   return !any_pair(pa, pb, [&](const Spec& x, const Spec& y) { return prim_overlaps(x, y, &t); });
 }
 
-int compare_depth(const Shape<double>& a, const Shape<double>& b, double len) {
+int compare_depth(const Placed& a, const Placed& b, double len) {
   require_finite(len, "length");
   const Parts pa = parts_of(a), pb = parts_of(b);
   if (pa.compound || pb.compound) throw Unsupported("oracle: compare_depth is not defined for compounds");
   return prim_compare_depth(pa.items[0], pb.items[0], len);
 }
 
-bool inside_box(const Shape<double>& s, const Aabb<double>& box) {
+bool inside_box(const Placed& s, const Aabb<double>& box) {
   require_finite(box.min(), "box min");
   require_finite(box.max(), "box max");
   const Parts ps = parts_of(s);
@@ -794,7 +830,7 @@ bool inside_box(const Shape<double>& s, const Aabb<double>& box) {
   return true;
 }
 
-int compare_boundary_distance(const Shape<double>& s, const Vec2<double>& p, double d) {
+int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d) {
   require_finite(p, "point");
   require_finite(d, "distance");
   const Parts ps = parts_of(s);
@@ -809,7 +845,7 @@ int compare_boundary_distance(const Shape<double>& s, const Vec2<double>& p, dou
   return best;
 }
 
-bool segment_meets(const Shape<double>& s, const Vec2<double>& p, const Vec2<double>& q) {
+bool segment_meets(const Placed& s, const Vec2<double>& p, const Vec2<double>& q) {
   const Spec seg = segment_spec(p, q);
   const Parts ps = parts_of(s);
   for (const Spec& x : ps.items) {
@@ -818,7 +854,7 @@ bool segment_meets(const Shape<double>& s, const Vec2<double>& p, const Vec2<dou
   return false;
 }
 
-double approx_signed_distance(const Shape<double>& a, const Shape<double>& b) {
+double approx_signed_distance(const Placed& a, const Placed& b) {
   const Parts pa = parts_of(a), pb = parts_of(b);
   if (!pa.compound && !pb.compound) return prim_signed_distance(pa.items[0], pb.items[0]);
   bool hit = false;

@@ -248,6 +248,13 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     // |v| here; v itself is rounded toward zero in T, so its rounding needs no allowance.
     const double margin = resolve_margin(a, b, len);
     const double slack = 4 * rounding_tolerance(a, b) + 4 * 0x1p-53 * len;
+    // The gap left: at most twice margin + slack (the moved coordinates' rounding to T lies
+    // within the margin's own term), so a margin grown from the other shape's extent fails.
+    if (moved && oracle::compare_distance(moved.value(), b, 2 * (margin + slack)) > 0) {
+      fail(v, "gap left <= 2 (resolve_margin " + num(margin) + " + slack " + num(slack) + ")",
+           "gap ~" + num(oracle::approx_signed_distance(moved.value(), b)), "push " + vec(push) + "; " + pair_text(a, b));
+      return;
+    }
     const double lower = len - margin - slack;
     if (lower > 0 && oracle::compare_depth(a, b, lower) < 0) {
       fail(v, "|v| <= exact depth + resolve_margin (" + num(margin) + ") + slack (" + num(slack) + ")",

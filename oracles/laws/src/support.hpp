@@ -71,10 +71,17 @@ template <Scalar T>
 std::string describe(const Compound<T>& s) {
   std::string out = "compound{";
   bool first = true;
-  for (const Primitive<T>& c : s.children()) {
+  for (std::size_t i = 0; i < s.children().size(); ++i) {
     out += first ? "" : "; ";
     first = false;
-    out += std::visit([](const auto& x) { return describe(x); }, c);
+    out += std::visit([](const auto& x) { return describe(x); }, s.children()[i]);
+    const Transform<T> x = s.child_transform(i);
+    if (!x.is_identity()) {
+      out += " at p=";
+      out += vec(x.position());
+      out += " q=";
+      out += vec(x.rotation());
+    }
   }
   return out + "}";
 }

@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <optional>
+#include <ranges>
+#include <span>
+#include <type_traits>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -78,6 +81,34 @@ Aabb<T> raycast_bounds(const Shape<T>& shape) {
   return padded ? padded.value() : b;
 }
 
+/// A contiguous list of Shape<T> other than a span of them (std::vector, std::array, a C array):
+/// the helpers below take one with T deduced, e.g. find_contacts(std::vector<Shape<float>>).
+template <class R>
+concept ShapeList =
+    std::ranges::contiguous_range<R> && VariantShape<std::ranges::range_value_t<R>> &&
+    std::is_same_v<std::ranges::range_value_t<R>, Shape<scalar_of_t<std::ranges::range_value_t<R>>>> &&
+    !std::is_same_v<std::remove_cvref_t<R>, std::span<const std::ranges::range_value_t<R>>>;
+
+/// The scalar of a ShapeList.
+template <class R>
+using list_scalar_t = scalar_of_t<std::ranges::range_value_t<R>>;
+
+/// find_overlapping_shapes() on any ShapeList (T deduced).
+template <ShapeList R, class BP = DynamicTree<list_scalar_t<R>>>
+std::vector<ShapePair> find_overlapping_shapes(const R& shapes, BP bp = BP()) {
+  using T = list_scalar_t<R>;
+  return find_overlapping_shapes<T, BP>(std::span<const Shape<T>>(std::ranges::data(shapes), std::ranges::size(shapes)),
+                                        std::move(bp));
+}
+
+/// find_contacts() on any ShapeList (T deduced).
+template <ShapeList R, class BP = DynamicTree<list_scalar_t<R>>>
+std::vector<ShapeContact<list_scalar_t<R>>> find_contacts(const R& shapes, BP bp = BP()) {
+  using T = list_scalar_t<R>;
+  return find_contacts<T, BP>(std::span<const Shape<T>>(std::ranges::data(shapes), std::ranges::size(shapes)),
+                              std::move(bp));
+}
+
 /// The first shape a ray meets: index into the input list and the hit.
 template <Scalar T>
 struct ShapeHit {
@@ -99,6 +130,15 @@ std::optional<ShapeHit<T>> raycast_shapes(std::span<const Shape<T>> shapes, cons
     if (h && (!best || h->t < best->hit.t || (h->t == best->hit.t && i < best->index))) best = ShapeHit<T>{i, *h};
   });
   return best;
+}
+
+/// raycast_shapes() on any ShapeList (T deduced).
+template <ShapeList R, class BP = DynamicTree<list_scalar_t<R>>>
+std::optional<ShapeHit<list_scalar_t<R>>> raycast_shapes(const R& shapes, const Ray<list_scalar_t<R>>& ray,
+                                                         list_scalar_t<R> max_t, BP bp = BP()) {
+  using T = list_scalar_t<R>;
+  return raycast_shapes<T, BP>(std::span<const Shape<T>>(std::ranges::data(shapes), std::ranges::size(shapes)), ray,
+                               max_t, std::move(bp));
 }
 
 /// A body of a World met by a ray: its handle and the hit.

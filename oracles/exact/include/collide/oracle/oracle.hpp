@@ -22,6 +22,8 @@
 #include "collide/collide.hpp"
 
 #include <stdexcept>
+#include <type_traits>
+#include <utility>
 
 namespace collide::oracle {
 
@@ -38,20 +40,34 @@ class InvalidInput : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// A shape placed by a transform, as the oracle takes it: the exact image of the stored shape
+/// under x -> R(rotation) x + position, rotation (cos, sin) as stored (not normalised), every
+/// product and sum exact (transform.hpp). A compound's children are placed by their own
+/// transforms first. A Shape<double> converts to the identity placement.
+struct Placed {
+  Shape<double> shape;                ///< the stored (local) shape, widened to double
+  Vec2<double> position{0.0, 0.0};    ///< the transform's position
+  Vec2<double> rotation{1.0, 0.0};    ///< the transform's rotation, as stored
+  /// The identity placement: the shape itself.
+  Placed(Shape<double> s) : shape(std::move(s)) {}  // NOLINT(google-explicit-constructor)
+  /// The shape under the transform (position, rotation).
+  Placed(Shape<double> s, const Vec2<double>& p, const Vec2<double>& q) : shape(std::move(s)), position(p), rotation(q) {}
+};
+
 /// The exact answers, on double shapes. The templates below accept any shape type and scalar.
 /// Every function throws InvalidInput on a non-finite argument. Thread-safe (no shared state; the
 /// FPU rounding mode is set and restored per call).
 namespace exact {
-bool overlaps(const Shape<double>& a, const Shape<double>& b);
-bool contains(const Shape<double>& s, const Vec2<double>& p);
-int compare_distance(const Shape<double>& a, const Shape<double>& b, double d);
-bool within_band(const Shape<double>& a, const Shape<double>& b, double band);
-bool separates(const Shape<double>& a, const Shape<double>& b, const Vec2<double>& t);
-int compare_depth(const Shape<double>& a, const Shape<double>& b, double len);
-bool inside_box(const Shape<double>& s, const Aabb<double>& box);
-int compare_boundary_distance(const Shape<double>& s, const Vec2<double>& p, double d);
-bool segment_meets(const Shape<double>& s, const Vec2<double>& p, const Vec2<double>& q);
-double approx_signed_distance(const Shape<double>& a, const Shape<double>& b);
+bool overlaps(const Placed& a, const Placed& b);
+bool contains(const Placed& s, const Vec2<double>& p);
+int compare_distance(const Placed& a, const Placed& b, double d);
+bool within_band(const Placed& a, const Placed& b, double band);
+bool separates(const Placed& a, const Placed& b, const Vec2<double>& t);
+int compare_depth(const Placed& a, const Placed& b, double len);
+bool inside_box(const Placed& s, const Aabb<double>& box);
+int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d);
+bool segment_meets(const Placed& s, const Vec2<double>& p, const Vec2<double>& q);
+double approx_signed_distance(const Placed& a, const Placed& b);
 }  // namespace exact
 
 /// Any shape type as an exact Shape<double>.
@@ -72,21 +88,34 @@ Shape<double> as_exact_input(const S& s) {
   }
 }
 
+/// A placed shape is already an exact input.
+inline const Placed& as_exact_input(const Placed& p) { return p; }
+
+/// Any shape with a transform as the oracle's exact input (both widened exactly).
+template <AnyShape S>
+Placed placed(const S& s, const Transform<scalar_of_t<S>>& x) {
+  return Placed(as_exact_input(s), x.position().template cast<double>(), x.rotation().template cast<double>());
+}
+
+/// What the oracle takes: any library shape, or a Placed one.
+template <class S>
+concept OracleInput = AnyShape<S> || std::is_same_v<std::remove_cvref_t<S>, Placed>;
+
 /// Exact: the closed shapes share a point.
-template <AnyShape A, AnyShape B>
+template <OracleInput A, OracleInput B>
 bool overlaps(const A& a, const B& b) {
   return exact::overlaps(as_exact_input(a), as_exact_input(b));
 }
 
 /// Exact: p lies in the closed shape.
-template <AnyShape S, Scalar T>
+template <OracleInput S, Scalar T>
 bool contains(const S& s, const Vec2<T>& p) {
   return exact::contains(as_exact_input(s), p.template cast<double>());
 }
 
 /// Exact sign of (gap(a, b) - d), gap = Euclidean distance between the closed shapes (0 when they
 /// overlap). d must be finite (InvalidInput otherwise); a negative d gives +1.
-template <AnyShape A, AnyShape B>
+template <OracleInput A, OracleInput B>
 int compare_distance(const A& a, const B& b, double d) {
   return exact::compare_distance(as_exact_input(a), as_exact_input(b), d);
 }
@@ -99,13 +128,13 @@ int compare_distance(const A& a, const B& b, double d) {
 /// - no child pair overlaps: true iff min over pairs of gap(a_i, b_j) <= band;
 /// - some child pair overlaps: true iff every overlapping child pair has depth <= band.
 /// For two primitives this is exactly |sigma| <= band. Never throws Unsupported.
-template <AnyShape A, AnyShape B>
+template <OracleInput A, OracleInput B>
 bool within_band(const A& a, const B& b, double band) {
   return exact::within_band(as_exact_input(a), as_exact_input(b), band);
 }
 
 /// Exact: a moved by t (exact rational sum, no rounding) does not overlap b.
-template <AnyShape A, AnyShape B, Scalar T>
+template <OracleInput A, OracleInput B, Scalar T>
 bool separates(const A& a, const B& b, const Vec2<T>& t) {
   return exact::separates(as_exact_input(a), as_exact_input(b), t.template cast<double>());
 }
@@ -114,13 +143,13 @@ bool separates(const A& a, const B& b, const Vec2<T>& t) {
 /// the shapes do not overlap (0 when they do not overlap now). With cores Pa, Pb, radii summing
 /// to r and D = Pb - Pa (Minkowski difference): depth = dist(0, boundary of D) + r when the cores
 /// meet, else max(0, r - dist(Pa, Pb)). Pairs of primitives only; a compound throws Unsupported.
-template <AnyShape A, AnyShape B>
+template <OracleInput A, OracleInput B>
 int compare_depth(const A& a, const B& b, double len) {
   return exact::compare_depth(as_exact_input(a), as_exact_input(b), len);
 }
 
 /// Exact: the closed shape lies inside the closed box.
-template <AnyShape S, Scalar T>
+template <OracleInput S, Scalar T>
 bool inside_box(const S& s, const Aabb<T>& box) {
   // A bounding box may lie beyond max_magnitude() (it is rounded outward): widen it unchecked.
   return exact::inside_box(as_exact_input(s), detail::AabbAccess::unchecked<double>(box.min().template cast<double>(),
@@ -130,20 +159,20 @@ bool inside_box(const S& s, const Aabb<T>& box) {
 /// Exact sign of (distance from p to the shape's boundary - d). For p inside the closed shape
 /// this is the point's depth (distance to the nearest boundary point). A compound answers only
 /// for p outside all its children (min over children); p inside a child throws Unsupported.
-template <AnyShape S, Scalar T>
+template <OracleInput S, Scalar T>
 int compare_boundary_distance(const S& s, const Vec2<T>& p, double d) {
   return exact::compare_boundary_distance(as_exact_input(s), p.template cast<double>(), d);
 }
 
 /// Exact: the closed segment [p, q] meets the closed shape.
-template <AnyShape S>
+template <OracleInput S>
 bool segment_meets(const S& s, const Vec2<double>& p, const Vec2<double>& q) {
   return exact::segment_meets(as_exact_input(s), p, q);
 }
 
 /// For reports only: the signed distance rounded to double (gap > 0, touching 0, -depth < 0;
 /// compounds report -0 when overlapping).
-template <AnyShape A, AnyShape B>
+template <OracleInput A, OracleInput B>
 double approx_signed_distance(const A& a, const B& b) {
   return exact::approx_signed_distance(as_exact_input(a), as_exact_input(b));
 }

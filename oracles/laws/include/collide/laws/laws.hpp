@@ -79,7 +79,8 @@ Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool m
 /// within the band); otherwise the shape a' that translated(a, v) produces does not overlap b
 /// (oracle), and, for two primitives, |v| <= exact depth + resolve_margin + slack, where slack =
 /// 4 tolerances (the computed depth's own error, as in contact_law) plus v's rounding to T
-/// (oracle::compare_depth). Compounds: separation only (the oracle has no exact depth for them).
+/// (oracle::compare_depth), and the gap left by the moved a' at most 2 (resolve_margin + slack).
+/// Compounds: separation only (the oracle has no exact depth for them).
 template <Scalar T>
 Verdict resolution(const Shape<T>& a, const Shape<T>& b);
 
@@ -209,5 +210,64 @@ constexpr std::string_view name(LawInputs i) noexcept {
   constexpr std::string_view names[] = {"pair", "shape", "values", "scene"};
   return names[static_cast<std::size_t>(i)];
 }
+
+// ---------------------------------------------------------------------------------------------
+// Shapes placed by transforms (transformed.hpp). Each law judges the library on the exact images
+// (oracle::placed): a shape with transform x is the exact image of its stored values under x.
+
+/// Law 10a. overlaps(a, xa, b, xb) equals the oracle's answer on the exact images outside the band
+/// overlap_tolerance(a, xa, b, xb) (inside it a difference is a disagreement); it is symmetric to
+/// the bit, equals overlaps(a, b) for identities, and contact() / distance() agree with it.
+template <Scalar T>
+Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
+
+/// Law 10b. The rounded outputs of placed shapes against the exact images: contact normal a unit
+/// vector, depth >= 0 and (two primitives) within 4 rounding_tolerance(a, xa, b, xb) plus T's
+/// rounding of the exact depth, a moved by -normal (depth + 2 bounds) apart, each point within
+/// depth + bound of both shapes; distance within that bound of the exact gap.
+template <Scalar T>
+Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
+
+/// Law 10c. v = resolve(a, xa, b, xb): zero without an overlap; otherwise a with its transform
+/// moved by v (Transform::moved; OutOfRange allowed, then the exact move is judged) is apart from b
+/// by the oracle, and for two primitives the gap left is at most 2 (resolve_margin(a, xa, b, xb,
+/// |v|) + slack) and |v| at most the exact depth + margin + slack (slack as in law 5).
+template <Scalar T>
+Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
+
+/// Law 10d. One placed shape: bounds(s, x) contains the exact image; contains(s, x, p) equals the
+/// oracle outside transform_tolerance(s, x) of the boundary; a raycast hit has 0 <= t <= max_t and
+/// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means the
+/// segment to max_t meets the image only within that bound. Identity: the world-space answers.
+template <Scalar T>
+Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const RayInput<T>& ray, T max_t);
+
+/// Law 10e. Moving both shapes by the same transform x keeps every answer: exactly (overlaps and
+/// contains identical) when x is a quarter turn with every mapped coordinate exact; otherwise
+/// overlaps() may change only within overlap_tolerance(a, x, b, x) plus the scaling band of |q|
+/// (R(q) scales positions by |q|, not radii); distance and depth kept within both pairs' bounds.
+template <Scalar T>
+Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<T>& x);
+
+/// Law 10f. A shape with transform x equals the world shape x(s) built by the factories in T:
+/// identical overlaps, distance and contact when every mapped value is exact in T; otherwise
+/// overlaps() differs only within transform_tolerance(s, x) plus T's rounding of the built shape,
+/// and distances within the bounds.
+template <Scalar T>
+Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& other);
+
+/// Law 10g. Transform::make(p, angle) and make_with_rotation(p, r) from raw values (position,
+/// angle, rotation: values 0, 1 | 2 | 3, 4): NaN or infinity gives NonFinite and a magnitude above
+/// max_magnitude<T>() OutOfRange, at the first offending value; a zero rotation vector
+/// ZeroRotation; a rotation with | |r|^2 - 1 | <= 4 eps_T is kept bit for bit, any other is
+/// normalised (within 2 eps_T of r / |r|); make() stores (cos, sin) with |q|^2 within 4 eps_T of
+/// 1; moved() names an out-of-range position and keeps the rotation.
+template <Scalar T>
+Verdict transform_rejection(std::span<const T> values);
+
+/// The transform laws' names, as in reports and test names.
+inline constexpr std::string_view kTransformLawNames[] = {"placed_agreement", "placed_outputs",  "placed_resolution",
+                                                          "placed_shape",     "placed_covariance", "placed_image",
+                                                          "transform_rejection"};
 
 }  // namespace collide::laws

@@ -1,0 +1,245 @@
+#pragma once
+/// @file transformed.hpp
+/// Every query on shapes stored in local frames and placed by transforms: overlaps, contact,
+/// resolve, distance, raycast, contains and bounds, for every kind (compounds included), both
+/// scalars and either argument order. The world-space queries are these with the identity.
+///
+/// Meaning: a shape s with transform x is the exact image of its stored values under x
+/// (transform.hpp). Queries compute that image in double (image.hpp) — a compound is never
+/// copied: each child is imaged when visited, under the body transform composed with its own —
+/// and run the world-space machinery on it. The identity computes nothing: the stored shape is
+/// used as is.
+///
+/// Error contract (the one definition, with the one at the top of queries.hpp):
+/// - delta_T(s, x) = transform_tolerance(s, x) bounds how far the computed image lies from the
+///   exact image (Hausdorff distance): 0 for the identity (and a compound without child
+///   transforms); otherwise 16 * 2^-53 * (|p|_inf + 2 L) + 2^-1070, p = x's position, L = the
+///   local magnitude (a primitive: the largest absolute coordinate of bounds(s) in its frame; a
+///   compound: the largest over its children of |child position|_inf + 2 * that child's).
+///   Derivation: a mapped coordinate (q.x u - q.y w) + p is three roundings of double, within
+///   3 * 2^-53 (|q.x u| + |q.y w| + |p|) <= 3 * 2^-53 (1.42 L + |p|) of exact; an OBB's turned
+///   axis moves its corners by at most 2 * 2^-53 * 1.42 * (hx + hy); an AABB turned into an OBB
+///   rounds its centre and half extents once each (2^-53 L); a compound child adds the
+///   composition (q rounded twice, p three times). Summed with the Euclidean sqrt(2), each image
+///   point is within about 8.5 * 2^-53 (|p| + 2 L) of exact: the stated bound has a factor of 2 to
+///   spare. The 2^-1070 floor covers products that underflow.
+/// - With the identity, exact translations and quarter turns (q = (+-1, 0) or (0, +-1), and every
+///   sum coordinate + position exact in double, which holds for float shapes and positions whose
+///   magnitudes are within 2^28 of each other) the image is exact: overlaps and contains are the
+///   exact answers, and when the image's values are exact in T too, every answer (contact,
+///   distance, raycast included) equals the world-space answer on x(s) built by the factories,
+///   which then holds the same values; resolve() may push further, by its margin's delta_T terms.
+///   Moving both shapes of a pair by one exact transform keeps the decisions; rounded outputs
+///   move within their bounds (their rounding depends on where the shapes are).
+/// - overlaps(a, xa, b, xb) equals the exact answer for the exact images whenever their signed
+///   distance (gap, or minus the penetration depth) is outside
+///   [-overlap_tolerance(a, xa, b, xb), +overlap_tolerance(a, xa, b, xb)], the sum of both delta_T.
+///   contains(s, x, p) likewise, with delta_T(s, x) around the boundary.
+/// - Rounded outputs (contact depth, points, distance) get delta_T(a) + delta_T(b) added to the
+///   world-space bound: rounding_tolerance(a, xa, b, xb) is their unit; resolve()'s margin gets
+///   2 (delta_T(a) + delta_T(b)) added; raycast_tolerance(s, x, ray) adds delta_T(s, x).
+/// - No allocation: imaging a polygon of at most 8 vertices (ConvexPolygon::kInline) is inline.
+
+#include "collide/compound.hpp"
+#include "collide/contains.hpp"
+#include "collide/image.hpp"
+#include "collide/queries.hpp"
+#include "collide/raycast.hpp"
+#include "collide/shape_traits.hpp"
+#include "collide/transform.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <type_traits>
+
+namespace collide {
+
+namespace detail {
+
+/// The local magnitude L of transform_tolerance().
+template <class S>
+Calc local_extent(const S& s) {
+  if constexpr (is_compound_v<S>) {
+    return s.local_extent();
+  } else {
+    return box_scale(bounds(s));
+  }
+}
+
+/// Calls f with the concrete shape s placed by x, always in double: a primitive's image (exact for
+/// the identity), or a compound seen through its placement. Imaging even the identity keeps one
+/// set of placed types (the five primitives in double and the placed compound) whatever the
+/// kinds, so a transformed query instantiates what a world-space query in double does; the
+/// queries take the world-space path when both transforms are identities.
+template <class S, Scalar T, class F>
+decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
+  if constexpr (is_compound_v<S>) {
+    return f(placed(s, x.pose()));
+  } else {
+    return with_image(s, x.pose(), f);
+  }
+}
+
+/// Calls f(a placed, b placed) for any two shapes (variants visited first).
+template <class A, class B, Scalar T, class F>
+decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
+  return visit_shape(a, [&](const auto& ca) {
+    return visit_shape(b, [&](const auto& cb) {
+      return with_placed(ca, xa, [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
+    });
+  });
+}
+
+}  // namespace detail
+
+/// How far the computed image of s under x may lie from the exact image (Hausdorff distance):
+/// 16 * 2^-53 * (|position|_inf + 2 L) + 2^-1070, or 0 for the identity on a shape without child
+/// transforms. See the contract at the top of this file.
+template <AnyShape S>
+Calc transform_tolerance(const S& s, const Transform<scalar_of_t<S>>& x) {
+  if (x.is_identity()) return placement_tolerance(s);
+  return detail::visit_shape(s, [&](const auto& c) { return detail::image_tolerance(x.pose(), detail::local_extent(c)); });
+}
+
+/// The band of overlaps(a, xa, b, xb): transform_tolerance(a, xa) + transform_tolerance(b, xb).
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+Calc overlap_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
+                       const Transform<scalar_of_t<A>>& xb) {
+  return transform_tolerance(a, xa) + transform_tolerance(b, xb);
+}
+
+/// The error unit of the transformed pair's rounded outputs: rounding_tolerance() of the world
+/// images (S their largest coordinate) plus transform_tolerance() of each.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+Calc rounding_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
+                        const Transform<scalar_of_t<A>>& xb) {
+  const Calc s = std::max(detail::box_scale(bounds(a, xa)), detail::box_scale(bounds(b, xb)));
+  return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor + overlap_tolerance(a, xa, b, xb);
+}
+
+/// Conservative world bounding box of s placed by x: it contains the exact image (the computed
+/// image's box padded by transform_tolerance(s, x), rounded outward to T). bounds(s) for the identity.
+template <AnyShape S>
+Aabb<scalar_of_t<S>> bounds(const S& s, const Transform<scalar_of_t<S>>& x) {
+  using T = scalar_of_t<S>;
+  if (x.is_identity()) return bounds(s);
+  const Calc tol = transform_tolerance(s, x);
+  return detail::visit_shape(s, [&](const auto& c) {
+    return detail::with_placed(c, x, [&](const auto& img) {
+      const Aabb<Calc> b = detail::calc_bounds(img);
+      return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
+    });
+  });
+}
+
+/// overlaps() of a placed by xa and b placed by xb. Exact outside the band overlap_tolerance(a, xa,
+/// b, xb); equal to overlaps(a, b) for identities. Symmetric to the bit.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+bool overlaps(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+  if (xa.is_identity() && xb.is_identity()) return overlaps(a, b);
+  return detail::with_placed_pair(a, xa, b, xb,
+                                  [](const auto& pa, const auto& pb) { return detail::overlaps_concrete(pa, pb); });
+}
+
+/// contact() of the placed shapes, in world space: present exactly when overlaps(a, xa, b, xb).
+/// Extra arguments are those of the world-space contact(), passed on. Error: the world-space
+/// bound with rounding_tolerance(a, xa, b, xb) as its unit.
+template <AnyShape A, AnyShape B, class... Extra>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
+                                               const Transform<scalar_of_t<A>>& xb, const Extra&... extra) {
+  using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return detail::contact_as<T>(a, b, extra...);
+  return detail::with_placed_pair(
+      a, xa, b, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
+}
+
+/// The margin resolve(a, xa, b, xb) adds (at most this): resolve_margin()'s formula on the world
+/// images, with S_a the larger of bounds(a, xa)'s coordinates and |xa's position|_inf (the move
+/// rounds the position to T), plus 2 (transform_tolerance(a, xa) + transform_tolerance(b, xb))
+/// (the depth is computed on one image and the moved shape is another). resolve_margin(a, b,
+/// depth) for two identities.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+Calc resolve_margin(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
+                    Calc depth) {
+  if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth);
+  const Calc sa = std::max(detail::box_scale(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
+  const Calc s = std::max(sa, detail::box_scale(bounds(b, xb)));
+  return detail::margin_of<scalar_of_t<A>>(s, sa, depth) + 2 * overlap_tolerance(a, xa, b, xb);
+}
+
+/// The world-space push that separates a (placed by xa) from b (placed by xb): a's transform
+/// moved by it (Transform::moved) no longer overlaps. Zero when they do not overlap. Margin: at most
+/// resolve_margin(a, xa, b, xb, depth); tested by moving a's transform only for polygons and
+/// compounds, as resolve() does.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+Vec2<scalar_of_t<A>> resolve(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
+                             const Transform<scalar_of_t<A>>& xb) {
+  using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return resolve(a, b);
+  const Calc extra = 2 * overlap_tolerance(a, xa, b, xb);
+  return detail::visit_shape(a, [&](const auto& ca) {
+    return detail::with_placed(ca, xa, [&](const auto& pa) {
+      return detail::visit_shape(b, [&](const auto& cb) {
+        return detail::with_placed(cb, xb, [&](const auto& pb) {
+          const Calc s_moved = std::max(detail::scale_of(detail::calc_bounds(pa)), widen(xa.position()).cwiseAbs().maxCoeff());
+          const auto still = [&](const Vec2<T>& v) -> std::optional<bool> {
+            const Expected<Transform<T>> moved = xa.moved(v);
+            if (!moved) return std::nullopt;
+            return detail::with_placed(ca, *moved, [&](const auto& m) { return detail::overlaps_concrete(m, pb); });
+          };
+          return detail::resolve_as<T>(pa, pb, s_moved, extra, still);
+        });
+      });
+    });
+  });
+}
+
+/// distance() of the placed shapes: 0 exactly when overlaps(a, xa, b, xb), otherwise the gap, at
+/// least the smallest positive T. Error: within a few rounding_tolerance(a, xa, b, xb) of the
+/// exact images' gap.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+scalar_of_t<A> distance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+  using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return distance(a, b);
+  return detail::with_placed_pair(a, xa, b, xb,
+                                  [](const auto& pa, const auto& pb) { return detail::distance_as<T>(pa, pb); });
+}
+
+/// contains() for s placed by x: exact for the computed image, so exact for the exact image
+/// except for points within transform_tolerance(s, x) of its boundary. NaN gives false.
+template <AnyShape S>
+bool contains(const S& s, const Transform<scalar_of_t<S>>& x, const Vec2<scalar_of_t<S>>& p) {
+  if (x.is_identity()) return contains(s, p);
+  const Vec2c q = widen(p);
+  if (!std::isfinite(q.x()) || !std::isfinite(q.y())) return false;
+  return detail::visit_shape(s, [&](const auto& c) {
+    return detail::with_placed(c, x, [&](const auto& img) { return detail::contains_concrete(img, q); });
+  });
+}
+
+/// raycast_tolerance() for s placed by x: that of the image, plus transform_tolerance(s, x).
+template <AnyShape S>
+Calc raycast_tolerance(const S& s, const Transform<scalar_of_t<S>>& x, const Ray<scalar_of_t<S>>& ray) {
+  return detail::ray_tolerance(bounds(s, x), ray) + transform_tolerance(s, x);
+}
+
+/// raycast() against s placed by x, in world space (the ray is a world ray). Error: as raycast()
+/// with raycast_tolerance(s, x, ray).
+template <AnyShape S>
+std::optional<RayHit<scalar_of_t<S>>> raycast(const S& s, const Transform<scalar_of_t<S>>& x,
+                                              const Ray<scalar_of_t<S>>& ray, scalar_of_t<S> max_t) {
+  using T = scalar_of_t<S>;
+  if (x.is_identity()) return raycast(s, ray, max_t);
+  return detail::visit_shape(s, [&](const auto& c) {
+    return detail::with_placed(c, x, [&](const auto& img) { return detail::raycast_as<T>(img, ray, max_t); });
+  });
+}
+
+}  // namespace collide

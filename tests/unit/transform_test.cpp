@@ -1,0 +1,181 @@
+// Transforms: the factories' named errors, local shapes placed by transforms against the same
+// shapes built in world space, compounds whose children carry transforms, the resolution margin
+// from the moved shape's own coordinates (the ground box), and the list helpers deducing T.
+
+#include "support.hpp"
+
+#include <collide/broadphase.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace collide::test {
+namespace {
+
+template <class T>
+class Transforms : public ::testing::Test {};
+TYPED_TEST_SUITE(Transforms, Scalars);
+
+TYPED_TEST(Transforms, FactoriesNameEveryBadValue) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
+  const T huge = T(max_magnitude<T>() * T(2));
+  EXPECT_EQ(Transform<T>::make(V(nan, 0), T(0)).error().code(), Error::NonFinite);
+  EXPECT_EQ(Transform<T>::make(V(0, 0), inf).error().index(), 2);
+  EXPECT_EQ(Transform<T>::make(V(0, huge), T(0)).error().code(), Error::OutOfRange);
+  EXPECT_EQ(Transform<T>::make_with_rotation(V(0, 0), V(0, 0)).error().code(), Error::ZeroRotation);
+  EXPECT_EQ(Transform<T>::make_with_rotation(V(0, 0), V(nan, 1)).error().index(), 2);
+  EXPECT_EQ(Transform<T>::make_with_rotation(V(0, 0), V(1, huge)).error().code(), Error::OutOfRange);
+  EXPECT_EQ(Transform<T>::make_translation(V(inf, 0)).error().code(), Error::NonFinite);
+  const auto far = Transform<T>::make_translation(V(max_magnitude<T>(), 0)).value();
+  EXPECT_EQ(far.moved(V(max_magnitude<T>(), 0)).error().code(), Error::OutOfRange);
+}
+
+TYPED_TEST(Transforms, UnitRotationKeptOtherVectorsNormalised) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const auto turned = Transform<T>::make(V(1, 2), T(0.3)).value();
+  // A stored rotation is a unit vector up to rounding: rebuilding from it keeps it bit for bit.
+  EXPECT_EQ(Transform<T>::make_with_rotation(V(1, 2), turned.rotation()).value(), turned);
+  const auto scaled = Transform<T>::make_with_rotation(V(0, 0), V(3, 4)).value();
+  EXPECT_EQ(scaled.rotation(), V(T(0.6), T(0.8)));
+  const auto tiny = Transform<T>::make_with_rotation(V(0, 0), V(std::numeric_limits<T>::denorm_min(), 0)).value();
+  EXPECT_EQ(tiny.rotation(), V(1, 0));
+  EXPECT_TRUE(Transform<T>().is_identity());
+  EXPECT_FALSE(scaled.is_identity());
+}
+
+TYPED_TEST(Transforms, QuarterTurnsAndTranslationsGiveTheWorldAnswers) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // A box and a polygon touching at x = 1; turned a quarter and moved by (8, -4) they touch at
+  // y = 1 - 4. Every mapped value is exact, so the answers are those of the moved world shapes.
+  const Aabb<T> box(V(-1, -1), V(1, 1));
+  const ConvexPolygon<T> tri{V(1, 0), V(3, -1), V(3, 1)};
+  const auto x = Transform<T>::make_with_rotation(V(8, -4), V(0, 1)).value();
+  const Aabb<T> box_w(V(7, -5), V(9, -3));
+  const ConvexPolygon<T> tri_w{V(8, -3), V(9, -1), V(7, -1)};
+  EXPECT_TRUE(overlaps(box, x, tri, x));
+  EXPECT_EQ(overlaps(box, x, tri, x), overlaps(box_w, tri_w));
+  EXPECT_EQ(distance(box, x, tri, x), distance(box_w, tri_w));
+  const Aabb<T> bb = bounds(box, x);  // padded by the transform's bound, never smaller
+  EXPECT_TRUE(bb.min().x() <= T(7) && bb.min().y() <= T(-5) && bb.max().x() >= T(9) && bb.max().y() >= T(-3));
+  EXPECT_LT((widen(bb.max()) - Vec2c(9, -3)).norm(), 1e-5);
+  // One ulp apart, still decided exactly.
+  const auto apart = Transform<T>::make_with_rotation(V(8, std::nextafter(T(-4), T(0))), V(0, 1)).value();
+  EXPECT_FALSE(overlaps(box, x, tri, apart));
+  EXPECT_TRUE(contains(tri, x, V(8, -3)));
+  EXPECT_FALSE(contains(tri, x, V(8, std::nextafter(T(-3), T(-4)))));
+}
+
+TYPED_TEST(Transforms, RotatedShapesMatchTheirBuiltImages) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const auto x = Transform<T>::make(V(2, 1), T(0.5)).value();
+  const Capsule<T> cap(V(-1, 0), V(1, 0), T(0.25));
+  const Vec2c a = x.apply(Vec2c(-1, 0)), b = x.apply(Vec2c(1, 0));
+  const Capsule<T> cap_w(a.template cast<T>(), b.template cast<T>(), T(0.25));
+  const Circle<T> probe(V(2, 2), T(0.5));
+  EXPECT_EQ(overlaps(cap, x, probe, Transform<T>()), overlaps(cap_w, probe));
+  const T d = distance(cap, x, probe, Transform<T>()), dw = distance(cap_w, probe);
+  EXPECT_NEAR(double(d), double(dw), 1e-5);
+  // An AABB turned by a general angle is an OBB.
+  const Aabb<T> box(V(-1, -0.5), V(1, 0.5));
+  const Obb<T> obb_w = Obb<T>::make_with_axis(V(2, 1), V(1, 0.5), x.rotation()).value();
+  const auto c = contact(box, x, probe, Transform<T>()), cw = contact(obb_w, probe);
+  ASSERT_EQ(bool(c), bool(cw));
+  if (c) {
+    EXPECT_NEAR(double(c->depth), double(cw->depth), 1e-5);
+  }
+  // The placed shape's box holds its image.
+  const Aabb<T> bb = bounds(box, x);
+  for (const Vec2c& corner : {Vec2c(-1, -0.5), Vec2c(1, -0.5), Vec2c(1, 0.5), Vec2c(-1, 0.5)}) {
+    const Vec2c w = x.apply(corner);
+    EXPECT_TRUE(w.x() >= bb.min().x() && w.x() <= bb.max().x() && w.y() >= bb.min().y() && w.y() <= bb.max().y());
+  }
+  // A ray along +x at the body's height hits the turned box.
+  const auto hit = raycast(box, x, Ray<T>{V(-5, 1), V(1, 0)}, T(100));
+  ASSERT_TRUE(hit);
+  EXPECT_GT(hit->t, T(5));
+}
+
+TYPED_TEST(Transforms, CompoundChildrenCarryTheirTransforms) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  using Child = typename Compound<T>::Child;
+  // Two circles of radius 1 placed at x = -3 and x = +3 in the body's frame.
+  const Compound<T> body = Compound<T>::make_placed(std::vector<Child>{
+                                                       {Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(-3, 0)).value()},
+                                                       {Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(3, 0)).value()}})
+                               .value();
+  EXPECT_TRUE(body.has_child_transforms());
+  EXPECT_LE(body.bounds().min().x(), T(-4));
+  EXPECT_GT(body.bounds().min().x(), T(-4.001));
+  const Circle<T> probe(V(3, 1.5), T(0.5));
+  EXPECT_TRUE(overlaps(body, probe));  // touches the right child at (3, 1)
+  EXPECT_FALSE(overlaps(body, Circle<T>(V(0, 0), T(1.5))));
+  // Turned half a turn about the origin of its frame, the body is the same point set.
+  const auto half = Transform<T>::make_with_rotation(V(0, 0), V(-1, 0)).value();
+  EXPECT_TRUE(overlaps(body, half, probe, Transform<T>()));
+  // Turned a quarter, its children sit at y = -3 and y = +3.
+  const auto quarter = Transform<T>::make_with_rotation(V(0, 0), V(0, 1)).value();
+  EXPECT_FALSE(overlaps(body, quarter, probe, Transform<T>()));
+  EXPECT_TRUE(contains(body, quarter, V(0, 4)));
+  const V push = resolve(probe, Transform<T>(), body, quarter);
+  EXPECT_EQ(push, V(0, 0));
+  const V out = resolve(Circle<T>(V(0.5, 3), 1), Transform<T>(), body, quarter);
+  EXPECT_FALSE(overlaps(translated(Circle<T>(V(0.5, 3), 1), out).value(), Transform<T>(), body, quarter));
+  // Moving the compound moves the children's transforms.
+  const Compound<T> moved = translated(body, V(10, 0)).value();
+  EXPECT_EQ(moved.child_transform(1).position(), V(13, 0));
+  EXPECT_TRUE(overlaps(moved, Circle<T>(V(13, 1.5), T(0.5))));
+}
+
+/// The gap a float or double ball of radius 0.5, sunk 0.1 into a ground box of half-width w
+/// (top face y = 0), is left with after resolve(): the margin depends on the ball's own
+/// coordinates and the depth, not on w.
+template <Scalar T, class Ground>
+double ground_gap(const Ground& ground) {
+  const Circle<T> ball(Vec2<T>(0, T(0.4)), T(0.5));
+  const Vec2<T> push = resolve(ball, ground);
+  const Circle<T> after = translated(ball, push).value();
+  EXPECT_FALSE(overlaps(after, ground)) << "the pushed ball still overlaps (exact decision)";
+  return double(after.center().y()) - 0.5;  // exact: the top face is y = 0
+}
+
+TYPED_TEST(Transforms, GroundBoxLeavesTheBallWithinTheMarginOfItsOwnScale) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  for (const T w : {T(10), T(1e3), T(1e5)}) {
+    const Aabb<T> box(V(-w, -1), V(w, 0));
+    const Obb<T> obb = Obb<T>::make_with_axis(V(0, T(-0.5)), V(w, T(0.5)), V(1, 0)).value();
+    for (const double gap : {ground_gap<T>(box), ground_gap<T>(obb)}) {
+      EXPECT_GT(gap, 0) << "half-width " << w;
+      EXPECT_LE(gap, 1e-5) << "half-width " << w;
+      // The documented margin, for the ball against this ground, bounds the gap.
+      EXPECT_LE(gap, 2 * resolve_margin(Circle<T>(V(0, T(0.4)), T(0.5)), box, 0.1)) << "half-width " << w;
+    }
+  }
+}
+
+TYPED_TEST(Transforms, ListHelpersDeduceTheScalar) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const std::vector<Shape<T>> shapes = {Circle<T>(V(0, 0), 1), Aabb<T>(V(1, -1), V(3, 1)), Circle<T>(V(9, 9), 1)};
+  const auto pairs = broadphase::find_overlapping_shapes(shapes);
+  ASSERT_EQ(pairs.size(), 1u);
+  const auto contacts = broadphase::find_contacts(shapes);
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts[0].b, 1u);
+  const auto hit = broadphase::raycast_shapes(shapes, Ray<T>{V(9, 0), V(0, 1)}, T(100));
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->index, 2u);
+  const std::array<Shape<T>, 2> fixed = {shapes[0], shapes[1]};
+  EXPECT_EQ(broadphase::find_contacts(fixed).size(), 1u);
+}
+
+}  // namespace
+}  // namespace collide::test
