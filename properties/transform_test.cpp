@@ -149,7 +149,7 @@ void register_kind(ShapeKind k) {
     const Vec2<T> target(x.apply(inner_point(a)).template cast<T>());
     const Vec2<T> dir = *rc::gen::inRange(0, 4) != 0 ? Vec2<T>(target - origin) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
     const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2)});
-    judge(laws::placed_shape(a, x, p.allFinite() ? q : p, laws::RayInput<T>{origin, dir}, max_t));
+    judge(laws::placed_shape(a, x, p.allFinite() ? q : p, Ray<T>{origin, dir}, max_t));
   };
   register_test("placed_shape", kind + "_" + scalar, prop);
 }

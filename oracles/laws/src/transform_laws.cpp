@@ -288,7 +288,7 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
 }
 
 template <Scalar T>
-Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const RayInput<T>& ray, T max_t) {
+Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const Ray<T>& ray, T max_t) {
   return judged("s = " + placed_text(s, x) + "; p = " + vec(p) + "; ray " + vec(ray.origin) + " + t " +
                     vec(ray.direction) + ", max_t " + num(max_t),
                 [&](Judgement& j) {
@@ -479,7 +479,7 @@ Verdict transform_rejection(std::span<const T> values) {
   template Verdict placed_outputs<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);   \
   template Verdict placed_resolution<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&,                      \
                                         const Transform<T>&);                                                       \
-  template Verdict placed_shape<T>(const Shape<T>&, const Transform<T>&, const Vec2<T>&, const RayInput<T>&, T);    \
+  template Verdict placed_shape<T>(const Shape<T>&, const Transform<T>&, const Vec2<T>&, const Ray<T>&, T);    \
   template Verdict placed_covariance<T>(const Shape<T>&, const Shape<T>&, const Transform<T>&);                     \
   template Verdict placed_image<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&);                          \
   template Verdict transform_rejection<T>(std::span<const T>);

@@ -240,7 +240,7 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
 /// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means the
 /// segment to max_t meets the image only within that bound. Identity: the world-space answers.
 template <Scalar T>
-Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const RayInput<T>& ray, T max_t);
+Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const Ray<T>& ray, T max_t);
 
 /// Law 10e. Moving both shapes by the same transform x keeps every answer: exactly (overlaps and
 /// contains identical) when x is a quarter turn with every mapped coordinate exact; otherwise
