@@ -28,6 +28,7 @@ const b2Transform kXf = identity();
 
 // ---- Box2D boolean overlap (b2TestOverlap, skins 0) ----------------------------------------
 inline bool b2_overlap(const AabbIn& a, const AabbIn& b) { return b2TestOverlap(a.b, b.b); }
+inline bool b2_overlap(const CircleIn& a, const AabbIn& b) { return b2TestOverlap(&a.b, 0, &b.p, 0, kXf, kXf); }
 template <class A, class B>
 inline bool b2_overlap(const A& a, const B& b) {
   return b2TestOverlap(&a.b, 0, &b.b, 0, kXf, kXf);
@@ -57,6 +58,21 @@ inline std::optional<B2Contact> b2_manifold(const CircleIn& a, const ObbIn& b) {
   b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);  // Box2D takes the polygon first
   return from_manifold(m, b.b, a.b, true);
 }
+inline std::optional<B2Contact> b2_manifold(const CircleIn& a, const AabbIn& b) {
+  b2Manifold m;
+  b2CollidePolygonAndCircle(&m, &b.p, kXf, &a.b, kXf);
+  return from_manifold(m, b.p, a.b, true);
+}
+inline std::optional<B2Contact> b2_manifold(const CircleIn& a, const HullIn& b) {
+  b2Manifold m;
+  b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);
+  return from_manifold(m, b.b, a.b, true);
+}
+inline std::optional<B2Contact> b2_manifold(const AabbIn& a, const AabbIn& b) {
+  b2Manifold m;
+  b2CollidePolygons(&m, &a.p, kXf, &b.p, kXf);
+  return from_manifold(m, a.p, b.p, false);
+}
 inline std::optional<B2Contact> b2_manifold(const ObbIn& a, const ObbIn& b) {
   b2Manifold m;
   b2CollidePolygons(&m, &a.b, kXf, &b.b, kXf);
@@ -76,6 +92,21 @@ inline int b2_manifold_points(const CircleIn& a, const CircleIn& b) {
 inline int b2_manifold_points(const CircleIn& a, const ObbIn& b) {
   b2Manifold m;
   b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);
+  return m.pointCount;
+}
+inline int b2_manifold_points(const CircleIn& a, const AabbIn& b) {
+  b2Manifold m;
+  b2CollidePolygonAndCircle(&m, &b.p, kXf, &a.b, kXf);
+  return m.pointCount;
+}
+inline int b2_manifold_points(const CircleIn& a, const HullIn& b) {
+  b2Manifold m;
+  b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);
+  return m.pointCount;
+}
+inline int b2_manifold_points(const AabbIn& a, const AabbIn& b) {
+  b2Manifold m;
+  b2CollidePolygons(&m, &a.p, kXf, &b.p, kXf);
   return m.pointCount;
 }
 inline int b2_manifold_points(const ObbIn& a, const ObbIn& b) {
@@ -262,6 +293,8 @@ bool register_narrowphase() {
   ok = add_pair<AabbIn, AabbIn>(K::Aabb, K::Aabb, 1.7f, &Maker::aabb, &Maker::aabb, 2) && ok;
   ok = add_pair<ObbIn, ObbIn>(K::Obb, K::Obb, 1.6f, &Maker::obb, &Maker::obb, 3) && ok;
   ok = add_pair<CircleIn, ObbIn>(K::Circle, K::Obb, 1.8f, &Maker::circle, &Maker::obb, 4) && ok;
+  ok = add_pair<CircleIn, AabbIn>(K::Circle, K::Aabb, 1.8f, &Maker::circle, &Maker::aabb, 9) && ok;
+  ok = add_pair<CircleIn, HullIn>(K::Circle, K::Polygon, 1.5f, &Maker::circle, &Maker::hull, 10) && ok;
   ok = add_pair<CapsuleIn, CapsuleIn>(K::Capsule, K::Capsule, 1.4f, &Maker::capsule, &Maker::capsule, 5) && ok;
   ok = add_pair<HullIn, HullIn>(K::Polygon, K::Polygon, 1.3f, &Maker::hull, &Maker::hull, 6) && ok;
   ok = add_touching<CircleIn>(K::Circle, &Maker::touching_circles, 7) && ok;

@@ -186,6 +186,9 @@ void register_pair_laws(ShapeKind ka, ShapeKind kb) {
   simple("resolution", &laws::resolution<T>);
   simple("contact", &laws::contact_law<T>);
   simple("distance", &laws::distance_law<T>);
+  simple("separation", &laws::manifold_separation<T>);
+  simple("feature_ids", &laws::manifold_ids<T>);
+  simple("speculative", &laws::manifold_speculative<T>);
   entries.push_back({"touching", false, [=] {
                        const auto [a, b] = gen_touching_pair<T>(ka, kb);
                        judge<T>(laws::touching(a, b), "touching", pair, a, b, true);

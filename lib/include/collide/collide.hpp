@@ -8,6 +8,7 @@
 #include "collide/contains.hpp"
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
+#include "collide/feature.hpp"
 #include "collide/predicates.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"

@@ -1,0 +1,199 @@
+#pragma once
+/// @file detail/contact_pairs.hpp
+/// The contact of two primitives in registry order, deciding presence exactly on the way: the
+/// rounded contact computation runs first, and the exact decision (decide.hpp) is asked only when
+/// its signed distance lies within the rounding band of touching. Specialised pairs:
+///   - circle-circle: analytically;
+///   - circle against a box or a polygon: the centre's face excesses, then its closest point;
+///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
+///     normals (taken from the stored axes for boxes), then reference-face clipping.
+/// Every other pair (capsules, boxes flat on an axis, boxes thinner than their corners' rounding,
+/// polygons of more than 8 vertices, tiny shapes) decides exactly, then runs contact_cores().
+/// With a speculative distance, pairs apart by at most it get a speculative contact.
+
+#include "collide/decide.hpp"
+#include "collide/detail/contact_cores.hpp"
+#include "collide/detail/core.hpp"
+#include "collide/shape_traits.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+namespace collide::detail {
+
+/// A box or polygon core with the unit outward normal of each edge. Box normals come from the
+/// stored axes (exact up to one rounding), not from the rounded corners.
+struct Hull {
+  Core core;
+  std::array<Vec2c, 8> normals;
+};
+
+/// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
+/// scale s: every value entering it carries a few roundings of s (corners, differences, dots),
+/// below 32 units; 64 are used.
+inline Calc band_of(Calc s) noexcept { return kOverlapErrorFactor * kUnitRoundoff * s; }
+
+/// Builds h from a box whose core is a proper rectangle; false for a box flat on an axis.
+template <Scalar T>
+bool hull_of(const Aabb<T>& s, Hull& h) {
+  if (!(s.min().x() < s.max().x() && s.min().y() < s.max().y())) return false;
+  h.core = core_of(s);
+  h.normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
+  return true;
+}
+
+/// Builds h from an oriented box whose four computed corners turn strictly left (core_of keeps
+/// them); false for boxes flat on an axis or thinner than their corners' rounding.
+template <Scalar T>
+bool hull_of(const Obb<T>& s, Hull& h) {
+  const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  if (!(hmin > 0x1p-40 * (widen(s.center()).cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
+  h.core = core_of(s);
+  const Vec2c u = unit_of(widen(s.axis())), v = perp(u);
+  h.normals = {Vec2c(-v), u, v, Vec2c(-u)};
+  return true;
+}
+
+/// Builds h from a polygon of at most 8 vertices.
+template <Scalar T>
+bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
+  if (s.size() > h.normals.size()) return false;
+  h.core = core_of(s);
+  for_each_face(h.core, [&h](const Vec2c& n, unsigned i) { h.normals[i] = n; });
+  return true;
+}
+
+/// Calls f(normal, index) for each face of a hull.
+inline auto faces_of(const Hull& h) {
+  return [&h](auto&& f) {
+    for (std::size_t i = 0; i < h.core.size(); ++i) f(h.normals[i], unsigned(i));
+  };
+}
+
+/// The exact decision for a pair of primitives in registry order.
+template <class A, class B>
+bool decide_exactly(const A& a, const B& b) {
+  return decide::pair(a, b);
+}
+
+/// The contact of two primitives without a specialisation: the exact decision, then contact_cores().
+template <class A, class B>
+std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
+  const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
+                           !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
+  if (decide_exactly(a, b)) return contact_cores(core_of(a), core_of(b), speculative, radius_free);
+  if (speculative > 0) return speculative_contact_cores(core_of(a), core_of(b), speculative);
+  return std::nullopt;
+}
+
+/// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
+/// centres (within rounding) give normal (1, 0), as contact_cores() does.
+template <Scalar T>
+std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
+  const Vec2c ca = widen(a.center()), cb = widen(b.center());
+  const Calc ra = a.radius(), rb = b.radius();
+  const Calc s = std::max(ca.cwiseAbs().maxCoeff(), cb.cwiseAbs().maxCoeff());
+  if (!(std::max({s, ra, rb}) >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Vec2c d = cb - ca;
+  int sign = filtered_sign_dist2(d.x(), d.y(), ra + rb);
+  if (sign == 2) sign = decide::circle_circle(a, b) ? -1 : 1;
+  if (sign > 0 && !(speculative > 0)) return std::nullopt;
+  const Calc dist = norm_of(d);
+  CoreContact out;
+  out.count = 1;
+  if (sign > 0) {
+    out.overlapping = false;
+    out.separations[0] = std::max(Calc(0), dist - ra - rb);
+    if (!(out.separations[0] <= speculative)) return std::nullopt;
+  } else {
+    out.separations[0] = dist - ra - rb;
+  }
+  if (dist > band_of(s)) {
+    out.normal = unit_of(d);
+    out.depth = std::max(Calc(0), -out.separations[0]);
+    out.points[0] = ca + out.normal * (ra + out.separations[0] * 0.5);
+  } else {
+    if (sign <= 0) {
+      out.depth = ra + rb;
+      out.separations[0] = -out.depth;
+    }
+    out.points[0] = (ca + cb) * 0.5;
+  }
+  return out;
+}
+
+/// Circle against a box or a polygon h (b is the shape, for the exact decision): the centre's
+/// excess over each face line, then the closest point of the boundary when the centre is outside.
+template <Scalar T, class B>
+std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, const Hull& h, Calc speculative) {
+  const Core pc = core_of(a);
+  const Vec2c c = pc[0];
+  const Calc r = a.radius();
+  const Calc s = std::max(max_abs(pc), max_abs(h.core));
+  const Calc band = band_of(s);
+  // The face of largest excess; any face beyond r (plus speculative) by more than the band separates.
+  Calc excess = -std::numeric_limits<Calc>::infinity();
+  unsigned face = 0;
+  const Calc beyond = r + std::max(speculative, Calc(0)) + band;
+  for (std::size_t i = 0; i < h.core.size(); ++i) {
+    const Calc e = (c - h.core[i]).dot(h.normals[i]);
+    if (e > beyond) return std::nullopt;
+    if (e > excess) {
+      excess = e;
+      face = unsigned(i);
+    }
+  }
+  if (!(excess > 0)) {
+    // The centre inside: certain when inside by more than the band.
+    if (excess < -band || decide_exactly(a, b)) {
+      return contact_from_axis(pc, h.core, Axis{Vec2c(-h.normals[face]), r - excess, 1, face}, speculative);
+    }
+    return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
+  }
+  const Closest cl = closest_points(pc, h.core);
+  const Calc gap = norm_of(cl.on_q - cl.on_p) - r;
+  const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+  if (!overlapping) return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
+  if (const std::optional<CoreContact> k = contact_from_closest(pc, h.core, cl)) return k;
+  return contact_from_axis(pc, h.core, least_penetration(pc, h.core), speculative);
+}
+
+/// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
+/// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
+/// the reference face of the contact.
+template <class A, class B>
+std::optional<CoreContact> contact_hulls(const A& a, const Hull& ha, const B& b, const Hull& hb, Calc speculative) {
+  const Calc band = band_of(std::max(max_abs(ha.core), max_abs(hb.core)));
+  const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), band, -band);
+  const bool overlapping = ax.depth > band || (!(ax.depth < -band) && decide_exactly(a, b));
+  if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative);
+  return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
+}
+
+template <class S>
+inline constexpr bool is_hull_kind_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
+                                       std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
+
+/// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
+/// they overlap, or, with speculative > 0, when they are apart by at most speculative (rounded).
+template <class A, class B>
+std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
+  constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
+  if constexpr ((circle_a || is_hull_kind_v<A>) && is_hull_kind_v<B>) {
+    Hull ha, hb;
+    if constexpr (circle_a) {
+      const Calc s = std::max({widen(a.center()).cwiseAbs().maxCoeff(), Calc(a.radius())});
+      if (hull_of(b, hb) && std::max(s, max_abs(hb.core)) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
+    } else {
+      if (hull_of(a, ha) && hull_of(b, hb) && std::max(max_abs(ha.core), max_abs(hb.core)) >= kTinyCore)
+        return contact_hulls(a, ha, b, hb, speculative);
+    }
+  }
+  return contact_generic(a, b, speculative);
+}
+
+}  // namespace collide::detail
