@@ -124,9 +124,13 @@ inline IncidentFace find_incident_face(const ReferenceFace& f) {
     out.count = 2;
     return out;
   }
+  std::array<Calc, 8> dots{};  // the alignments of the first 8 faces, computed once
   auto anti_parallel = [&](std::size_t j) {
+    if (j < dots.size() && dots[j] != 0) return dots[j];
     const Vec2c e = inc[(j + 1) % inc.size()] - inc[j];
-    return Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+    const Calc dot = Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+    if (j < dots.size()) dots[j] = dot;
+    return dot;
   };
   std::size_t best = 0;
   Calc best_dot = std::numeric_limits<Calc>::infinity();

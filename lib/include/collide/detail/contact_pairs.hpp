@@ -25,10 +25,24 @@
 namespace collide::detail {
 
 /// A box or polygon core with the unit outward normal of each edge. Box normals come from the
-/// stored axes (exact up to one rounding), not from the rounded corners.
+/// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are computed
+/// from its edges when asked (most pairs apart stop at the first face).
 struct Hull {
   Core core;
-  std::array<Vec2c, 8> normals;
+  std::array<Vec2c, 4> box_normals;
+  bool box = false;
+  Calc scale = 0;  ///< the largest absolute coordinate of the core
+  void push(const Vec2c& x) {
+    core.push(x);
+    scale = std::max(scale, x.cwiseAbs().maxCoeff());
+  }
+  Vec2c normal(std::size_t i) const {
+    if (box) return box_normals[i];
+    const Vec2c d = core[(i + 1) % core.size()] - core[i];
+    const Calc dd = d.squaredNorm();
+    if (dd > 0x1p-1000 && dd < 0x1p1000) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
+    return unit_of(Vec2c(d.y(), -d.x()));
+  }
 };
 
 /// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
@@ -40,8 +54,10 @@ inline Calc band_of(Calc s) noexcept { return kOverlapErrorFactor * kUnitRoundof
 template <Scalar T>
 bool hull_of(const Aabb<T>& s, Hull& h) {
   if (!(s.min().x() < s.max().x() && s.min().y() < s.max().y())) return false;
-  h.core = core_of(s);
-  h.normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
+  const Vec2c lo = widen(s.min()), hi = widen(s.max());
+  for (const Vec2c& x : {lo, Vec2c(hi.x(), lo.y()), hi, Vec2c(lo.x(), hi.y())}) h.push(x);
+  h.box_normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
+  h.box = true;
   return true;
 }
 
@@ -51,26 +67,29 @@ template <Scalar T>
 bool hull_of(const Obb<T>& s, Hull& h) {
   const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
   const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
-  if (!(hmin > 0x1p-40 * (widen(s.center()).cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
-  h.core = core_of(s);
-  const Vec2c u = unit_of(widen(s.axis())), v = perp(u);
-  h.normals = {Vec2c(-v), u, v, Vec2c(-u)};
+  const Vec2c c = widen(s.center()), w = widen(s.axis());
+  if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
+  // The corners as core_of() computes them (it keeps them in this order for such a box).
+  const Vec2c ex = w * Calc(s.half_extents().x()), ey = perp(w) * Calc(s.half_extents().y());
+  for (const Vec2c& x : {Vec2c(c - ex - ey), Vec2c(c + ex - ey), Vec2c(c + ex + ey), Vec2c(c - ex + ey)}) h.push(x);
+  const Vec2c u = unit_of(w), v = perp(u);
+  h.box_normals = {Vec2c(-v), u, v, Vec2c(-u)};
+  h.box = true;
   return true;
 }
 
-/// Builds h from a polygon of at most 8 vertices.
+/// Builds h from a polygon of at most 8 vertices (the rest take the generic path).
 template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
-  if (s.size() > h.normals.size()) return false;
-  h.core = core_of(s);
-  for_each_face(h.core, [&h](const Vec2c& n, unsigned i) { h.normals[i] = n; });
+  if (s.size() > ConvexPolygon<T>::kInline) return false;
+  for (const Vec2<T>& x : s.vertices()) h.push(widen(x));
   return true;
 }
 
 /// Calls f(normal, index) for each face of a hull.
 inline auto faces_of(const Hull& h) {
   return [&h](auto&& f) {
-    for (std::size_t i = 0; i < h.core.size(); ++i) f(h.normals[i], unsigned(i));
+    for (std::size_t i = 0; i < h.core.size(); ++i) f(h.normal(i), unsigned(i));
   };
 }
 
@@ -102,7 +121,9 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
   int sign = filtered_sign_dist2(d.x(), d.y(), ra + rb);
   if (sign == 2) sign = decide::circle_circle(a, b) ? -1 : 1;
   if (sign > 0 && !(speculative > 0)) return std::nullopt;
-  const Calc dist = norm_of(d);
+  const Calc d2 = d.squaredNorm();
+  const bool plain = d2 > 0x1p-1000 && d2 < 0x1p1000;  // no underflow or overflow in the square
+  const Calc dist = plain ? std::sqrt(d2) : norm_of(d);
   CoreContact out;
   out.count = 1;
   if (sign > 0) {
@@ -113,7 +134,7 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
     out.separations[0] = dist - ra - rb;
   }
   if (dist > band_of(s)) {
-    out.normal = unit_of(d);
+    out.normal = plain ? Vec2c(d / dist) : unit_of(d);
     out.depth = std::max(Calc(0), -out.separations[0]);
     out.points[0] = ca + out.normal * (ra + out.separations[0] * 0.5);
   } else {
@@ -130,31 +151,31 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
 /// excess over each face line, then the closest point of the boundary when the centre is outside.
 template <Scalar T, class B>
 std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, const Hull& h, Calc speculative) {
-  const Core pc = core_of(a);
-  const Vec2c c = pc[0];
+  const Vec2c c = widen(a.center());
   const Calc r = a.radius();
-  const Calc s = std::max(max_abs(pc), max_abs(h.core));
-  const Calc band = band_of(s);
+  const Calc band = band_of(std::max({c.cwiseAbs().maxCoeff(), r, h.scale}));
   // The face of largest excess; any face beyond r (plus speculative) by more than the band separates.
   Calc excess = -std::numeric_limits<Calc>::infinity();
   unsigned face = 0;
   const Calc beyond = r + std::max(speculative, Calc(0)) + band;
   for (std::size_t i = 0; i < h.core.size(); ++i) {
-    const Calc e = (c - h.core[i]).dot(h.normals[i]);
+    const Calc e = (c - h.core[i]).dot(h.normal(i));
     if (e > beyond) return std::nullopt;
     if (e > excess) {
       excess = e;
       face = unsigned(i);
     }
   }
+  const Core pc = core_of(a);
   if (!(excess > 0)) {
     // The centre inside: certain when inside by more than the band.
     if (excess < -band || decide_exactly(a, b)) {
-      return contact_from_axis(pc, h.core, Axis{Vec2c(-h.normals[face]), r - excess, 1, face}, speculative);
+      return contact_from_axis(pc, h.core, Axis{Vec2c(-h.normal(face)), r - excess, 1, face}, speculative);
     }
     return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
   }
-  const Closest cl = closest_points(pc, h.core);
+  Closest cl;  // the centre against the boundary's edges
+  closest_of_points_to_edges(cl, pc.pts(), h.core.pts(), false);
   const Calc gap = norm_of(cl.on_q - cl.on_p) - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
   if (!overlapping) return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
@@ -164,12 +185,13 @@ std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, c
 
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
-/// the reference face of the contact.
+/// the reference face of the contact. Its depth is within 2 bands of the least (the tie), so
+/// overlapping is certain above 3 bands.
 template <class A, class B>
 std::optional<CoreContact> contact_hulls(const A& a, const Hull& ha, const B& b, const Hull& hb, Calc speculative) {
-  const Calc band = band_of(std::max(max_abs(ha.core), max_abs(hb.core)));
+  const Calc band = band_of(std::max(ha.scale, hb.scale));
   const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), band, -band);
-  const bool overlapping = ax.depth > band || (!(ax.depth < -band) && decide_exactly(a, b));
+  const bool overlapping = ax.depth > 3 * band || (!(ax.depth < -band) && decide_exactly(a, b));
   if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative);
   return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
 }
@@ -184,12 +206,13 @@ template <class A, class B>
 std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
   if constexpr ((circle_a || is_hull_kind_v<A>) && is_hull_kind_v<B>) {
-    Hull ha, hb;
+    Hull hb;
     if constexpr (circle_a) {
       const Calc s = std::max({widen(a.center()).cwiseAbs().maxCoeff(), Calc(a.radius())});
-      if (hull_of(b, hb) && std::max(s, max_abs(hb.core)) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
+      if (hull_of(b, hb) && std::max(s, hb.scale) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
     } else {
-      if (hull_of(a, ha) && hull_of(b, hb) && std::max(max_abs(ha.core), max_abs(hb.core)) >= kTinyCore)
+      Hull ha;
+      if (hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore)
         return contact_hulls(a, ha, b, hb, speculative);
     }
   }

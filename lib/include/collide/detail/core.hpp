@@ -22,13 +22,11 @@ class Core {
  public:
   Core() = default;
   void push(const Vec2c& p) {
-    if (n_ < small_.size()) {
-      small_[n_] = p;
-    } else {
-      if (big_.empty()) big_.assign(small_.begin(), small_.end());
-      big_.push_back(p);
+    if (n_ < small_.size()) [[likely]] {
+      small_[n_++] = p;
+      return;
     }
-    ++n_;
+    push_big(p);
   }
   std::span<const Vec2c> pts() const noexcept {
     return {n_ > small_.size() ? big_.data() : small_.data(), n_};
@@ -38,6 +36,11 @@ class Core {
   Calc radius = 0;
 
  private:
+  void push_big(const Vec2c& p) {
+    if (big_.empty()) big_.assign(small_.begin(), small_.end());
+    big_.push_back(p);
+    ++n_;
+  }
   std::array<Vec2c, 8> small_{};
   std::vector<Vec2c> big_;
   std::size_t n_ = 0;
@@ -268,12 +271,11 @@ struct Closest {
   CoreFeature feature_q{};     ///< the feature of the second core that on_q lies on
 };
 
-/// Closest points between two cores' boundaries, with the features they lie on; exact only up to
-/// rounding. Meaningful when the cores do not intersect (then the closest pair involves a vertex
-/// of one of them).
-inline Closest closest_points(const Core& p, const Core& q) noexcept {
-  Closest best;
-  auto vertex_vs = [&best](std::span<const Vec2c> pts, std::span<const Vec2c> edges, bool swap) {
+/// Updates best with the closest pairs between the points pts and the edges of the core whose
+/// points are `edges` (swap: the edges belong to the first core).
+inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts, std::span<const Vec2c> edges,
+                                       bool swap) noexcept {
+  {
     const std::size_t n = edges.size();
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const Vec2c& v = pts[k];
@@ -298,9 +300,16 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
         best = swap ? Closest{d2, c, v, fe, fv} : Closest{d2, v, c, fv, fe};
       }
     }
-  };
-  vertex_vs(p.pts(), q.pts(), false);
-  vertex_vs(q.pts(), p.pts(), true);
+  }
+}
+
+/// Closest points between two cores' boundaries, with the features they lie on; exact only up to
+/// rounding. Meaningful when the cores do not intersect (then the closest pair involves a vertex
+/// of one of them).
+inline Closest closest_points(const Core& p, const Core& q) noexcept {
+  Closest best;
+  closest_of_points_to_edges(best, p.pts(), q.pts(), false);
+  closest_of_points_to_edges(best, q.pts(), p.pts(), true);
   return best;
 }
 
@@ -364,12 +373,13 @@ struct Axis {
 };
 
 /// Axis of least penetration among the faces of both cores (Minkowski-difference faces), with
-/// each core's faces listed by faces_p / faces_q (called as faces(f), f(unit normal, index)). A
+/// each core's faces listed by faces_p / faces_q (called as faces(f), f(unit normal, index)); a
+/// face's own support is its first vertex's (the core's extreme along it, up to rounding). A
 /// face (of q over p, or a later face of one core over an earlier one) is taken over the best so
 /// far only when it is shallower by more than `tie`, so that faces equally deep up to rounding
 /// (parallel faces, a side split by a vertex one ulp off its line) keep their order while the
-/// pair moves. Stops at
-/// the first face shallower than `stop_below` (a separating face, when the caller needs only that).
+/// pair moves, and the depth found is within 2 tie of the least. Stops at the first face
+/// shallower than `stop_below` and returns it (a separating face, when the caller needs only that).
 template <class FacesP, class FacesQ>
 Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie,
                             Calc stop_below) {
@@ -379,16 +389,16 @@ Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, Face
   bool stop = false;
   faces_p([&](const Vec2c& n, unsigned i) {
     if (stop) return;
-    const Calc d = support(p, n) + support(q, -n) + r;
-    if (d < best.depth - tie) best = {n, d, 0, i};
+    const Calc d = p[i].dot(n) + support(q, -n) + r;
     stop = d < stop_below;
+    if (d < best.depth - tie || stop) best = {n, d, 0, i};
   });
   if (stop) return best;
   faces_q([&](const Vec2c& n, unsigned i) {
     if (stop) return;
-    const Calc d = support(q, n) + support(p, -n) + r;
-    if (d < best_q.depth - tie) best_q = {Vec2c(-n), d, 1, i};
+    const Calc d = q[i].dot(n) + support(p, -n) + r;
     stop = d < stop_below;
+    if (d < best_q.depth - tie || stop) best_q = {Vec2c(-n), d, 1, i};
   });
   if (best_q.depth < best.depth - tie || stop) best = best_q;
   if (best.owner < 0) best = {Vec2c(1, 0), r, -1, 0};  // two points: any direction will do
