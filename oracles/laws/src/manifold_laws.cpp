@@ -43,6 +43,19 @@ Verdict judged(const Shape<T>& a, const Shape<T>& b, F&& body) {
   return j.v;
 }
 
+/// judged() on contact(a, b), when there is one.
+template <Scalar T, class F>
+Verdict judged_contact(const Shape<T>& a, const Shape<T>& b, F&& body) {
+  return judged(a, b, [&](Judgement& j) {
+    const auto c = contact(a, b);
+    if (c) {
+      body(j, *c);
+    } else {
+      j.v.account = "no contact";
+    }
+  });
+}
+
 /// The bound of a contact point's rounded values: 4 rounding tolerances (as contact_law), the
 /// rounding of the point and of the separation to T, and the normal's rounding over half the
 /// separation.
@@ -267,12 +280,8 @@ std::optional<Shape<T>> moved(const Shape<T>& b, const Vec2<T>& t) {
 
 template <Scalar T>
 Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {
-  return judged(a, b, [&](Judgement& j) {
-    const auto c = contact(a, b);
-    if (!c) {
-      j.v.account = "no contact";
-      return;
-    }
+  return judged_contact(a, b, [&](Judgement& j, const Contact<T>& k) {
+    const Contact<T>* c = &k;
     j.v.account = "contact of " + std::to_string(c->count) + " points, separations " + num(c->separations[0]) +
                   (c->count > 1 ? ", " + num(c->separations[1]) : "");
     for (int i = 0; i < c->count; ++i) {
@@ -289,12 +298,8 @@ Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {
 
 template <Scalar T>
 Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
-  return judged(a, b, [&](Judgement& j) {
-    const auto c = contact(a, b);
-    if (!c) {
-      j.v.account = "no contact";
-      return;
-    }
+  return judged_contact(a, b, [&](Judgement& j, const Contact<T>& k) {
+    const Contact<T>* c = &k;
     std::string skipped;
     for (int i = 0; i < c->count; ++i) {
       if (!check_point_features(j, a, b, *c, i, skipped)) return;

@@ -174,8 +174,10 @@ std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, c
     }
     return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
   }
-  Closest cl;  // the centre against the boundary's edges
-  closest_of_points_to_edges(cl, pc.pts(), h.core.pts(), false);
+  // The closest point of the boundary lies on the face of largest excess or a neighbour: every
+  // excess is at most the distance, and the closest feature's faces attain it.
+  Closest cl;
+  closest_of_points_to_edges(cl, pc.pts(), h.core.pts(), false, face + h.core.size() - 1, 3);
   const Calc gap = norm_of(cl.on_q - cl.on_p) - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
   if (!overlapping) return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
@@ -185,13 +187,13 @@ std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, c
 
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
-/// the reference face of the contact. Its depth is within 2 bands of the least (the tie), so
-/// overlapping is certain above 3 bands.
+/// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
+/// certain above the band plus 2 ties.
 template <class A, class B>
 std::optional<CoreContact> contact_hulls(const A& a, const Hull& ha, const B& b, const Hull& hb, Calc speculative) {
-  const Calc band = band_of(std::max(ha.scale, hb.scale));
-  const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), band, -band);
-  const bool overlapping = ax.depth > 3 * band || (!(ax.depth < -band) && decide_exactly(a, b));
+  const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * scale;
+  const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
+  const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
   if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative);
   return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
 }

@@ -274,13 +274,14 @@ struct Closest {
 /// Updates best with the closest pairs between the points pts and the edges of the core whose
 /// points are `edges` (swap: the edges belong to the first core).
 inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts, std::span<const Vec2c> edges,
-                                       bool swap) noexcept {
+                                       bool swap, std::size_t first = 0, std::size_t count = 8) noexcept {
   {
     const std::size_t n = edges.size();
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const Vec2c& v = pts[k];
-      const std::size_t m = n == 1 ? 1 : (n == 2 ? 1 : n);
-      for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t m = n == 1 ? 1 : (n == 2 ? 1 : std::min(n, count));
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t i = n <= 2 ? j : (first + j) % n;
         const Vec2c& a = edges[i];
         const Vec2c& b = edges[(i + 1) % n];
         const Vec2c d = b - a;
@@ -308,8 +309,8 @@ inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts
 /// of one of them).
 inline Closest closest_points(const Core& p, const Core& q) noexcept {
   Closest best;
-  closest_of_points_to_edges(best, p.pts(), q.pts(), false);
-  closest_of_points_to_edges(best, q.pts(), p.pts(), true);
+  closest_of_points_to_edges(best, p.pts(), q.pts(), false, 0, q.size());
+  closest_of_points_to_edges(best, q.pts(), p.pts(), true, 0, p.size());
   return best;
 }
 
