@@ -4,7 +4,8 @@
 /// rounded contact computation runs first, and the exact decision (decide.hpp) is asked only when
 /// its signed distance lies within the rounding band of touching. Specialised pairs:
 ///   - circle-circle: analytically;
-///   - circle against a box or a polygon: the centre's face excesses, then its closest point;
+///   - circle against a box: the centre's coordinates in the box's frame, clamped;
+///   - circle against a polygon: the centre's face excesses, then its closest point;
 ///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
 ///     normals (taken from the stored axes for boxes), then reference-face clipping.
 /// Every other pair (capsules, boxes flat on an axis, boxes thinner than their corners' rounding,
@@ -32,9 +33,16 @@ struct Hull {
   std::array<Vec2c, 4> box_normals;
   bool box = false;
   Calc scale = 0;  ///< the largest absolute coordinate of the core
-  void push(const Vec2c& x) {
-    core.push(x);
-    scale = std::max(scale, x.cwiseAbs().maxCoeff());
+  /// Pushes the points and sets scale.
+  template <class Points>
+  void push_all(const Points& xs) {
+    Calc m = 0;
+    for (const auto& x : xs) {
+      const Vec2c p = widen(x);
+      core.push(p);
+      m = std::max(m, p.cwiseAbs().maxCoeff());
+    }
+    scale = m;
   }
   Vec2c normal(std::size_t i) const {
     if (box) return box_normals[i];
@@ -55,7 +63,7 @@ template <Scalar T>
 bool hull_of(const Aabb<T>& s, Hull& h) {
   if (!(s.min().x() < s.max().x() && s.min().y() < s.max().y())) return false;
   const Vec2c lo = widen(s.min()), hi = widen(s.max());
-  for (const Vec2c& x : {lo, Vec2c(hi.x(), lo.y()), hi, Vec2c(lo.x(), hi.y())}) h.push(x);
+  h.push_all(std::array<Vec2c, 4>{lo, Vec2c(hi.x(), lo.y()), hi, Vec2c(lo.x(), hi.y())});
   h.box_normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
   h.box = true;
   return true;
@@ -71,8 +79,9 @@ bool hull_of(const Obb<T>& s, Hull& h) {
   if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
   // The corners as core_of() computes them (it keeps them in this order for such a box).
   const Vec2c ex = w * Calc(s.half_extents().x()), ey = perp(w) * Calc(s.half_extents().y());
-  for (const Vec2c& x : {Vec2c(c - ex - ey), Vec2c(c + ex - ey), Vec2c(c + ex + ey), Vec2c(c - ex + ey)}) h.push(x);
-  const Vec2c u = unit_of(w), v = perp(u);
+  h.push_all(std::array<Vec2c, 4>{c - ex - ey, c + ex - ey, c + ex + ey, c - ex + ey});
+  const Calc ww = w.squaredNorm();  // within a few eps_T of 1
+  const Vec2c u = w / std::sqrt(ww), v = perp(u);
   h.box_normals = {Vec2c(-v), u, v, Vec2c(-u)};
   h.box = true;
   return true;
@@ -82,7 +91,7 @@ bool hull_of(const Obb<T>& s, Hull& h) {
 template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   if (s.size() > ConvexPolygon<T>::kInline) return false;
-  for (const Vec2<T>& x : s.vertices()) h.push(widen(x));
+  h.push_all(s.vertices());
   return true;
 }
 
@@ -185,6 +194,79 @@ std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, c
   return contact_from_axis(pc, h.core, least_penetration(pc, h.core), speculative);
 }
 
+/// A box as a centre c, a stored axis w (|w| = 1 up to T's rounding) and half extents along w and
+/// perp(w): the point set c + s w + t perp(w), |s| <= hx, |t| <= hy.
+struct Rect {
+  Vec2c c, w;
+  Calc hx, hy;
+};
+/// Builds k from a box with interior whose corners keep their order when computed (see hull_of).
+template <Scalar T>
+bool rect_of(const Aabb<T>& s, Rect& k) {
+  const Vec2c lo = widen(s.min()), hi = widen(s.max());
+  k = {(lo + hi) * 0.5, Vec2c(1, 0), (hi.x() - lo.x()) * 0.5, (hi.y() - lo.y()) * 0.5};
+  return lo.x() < hi.x() && lo.y() < hi.y();
+}
+template <Scalar T>
+bool rect_of(const Obb<T>& s, Rect& k) {
+  k = {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
+  const Calc hmin = std::min(k.hx, k.hy), hmax = std::max(k.hx, k.hy);
+  return hmin > 0x1p-40 * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000;
+}
+
+/// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
+/// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
+/// (feature.hpp numbering); a centre inside takes the face it is least deep behind.
+template <Scalar T, class B>
+std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k, Calc speculative) {
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius();
+  const Vec2c v = perp(k.w);
+  const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
+  const Vec2c d = c - k.c;
+  const Calc s = d.dot(k.w) / ww, t = d.dot(v) / ww;  // the centre's box coordinates
+  const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
+  const Calc scale = std::max({c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * len});
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Calc band = band_of(scale);
+  if (std::max(ex, ey) * len - r > std::max(speculative, Calc(0)) + band) return std::nullopt;
+  CoreContact out;
+  out.count = 1;
+  if (ex > 0 || ey > 0) {
+    const Calc cs = std::clamp(s, -k.hx, k.hx), ct = std::clamp(t, -k.hy, k.hy);
+    const Vec2c q = k.c + k.w * cs + v * ct;
+    const Vec2c dq = q - c;
+    const Calc dist = norm_of(dq), gap = dist - r;
+    const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
+    if (dist > band) {
+      // Feature: a corner when both coordinates were clamped, else the side beyond which c lies.
+      const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
+      const unsigned side = ex > 0 ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
+      out.ids[0] = id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
+      out.normal = unit_of(dq);
+      out.overlapping = overlapping;
+      out.separations[0] = overlapping ? gap : std::max(gap, Calc(0));
+      out.depth = std::max(Calc(0), -out.separations[0]);
+      out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
+      return out;
+    }
+  } else if (!(std::max(ex, ey) * len < -band) && !decide_exactly(a, b)) {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  }
+  // The face the centre is least deep behind (or, within rounding of the boundary, beyond).
+  const bool along_w = ex >= ey;
+  const unsigned face = along_w ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
+  const Vec2c n_face = (along_w ? Vec2c(k.w * (s > 0 ? 1 : -1)) : Vec2c(v * (t > 0 ? 1 : -1))) / len;
+  const Calc e = std::max(ex, ey) * len;  // the centre's excess over that face (<= 0 inside)
+  out.normal = -n_face;
+  out.separations[0] = e - r;
+  out.depth = std::max(Calc(0), r - e);
+  out.points[0] = c + n_face * ((-e - r) * 0.5);
+  out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+  return out;
+}
+
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
 /// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
@@ -208,12 +290,16 @@ template <class A, class B>
 std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
   if constexpr ((circle_a || is_hull_kind_v<A>) && is_hull_kind_v<B>) {
-    Hull hb;
-    if constexpr (circle_a) {
+    if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
+      // Boxes flat on an axis or thinner than their rounding take the generic path.
+      Rect k;
+      if (rect_of(b, k)) return contact_circle_rect(a, b, k, speculative);
+    } else if constexpr (circle_a) {
+      Hull hb;
       const Calc s = std::max({widen(a.center()).cwiseAbs().maxCoeff(), Calc(a.radius())});
       if (hull_of(b, hb) && std::max(s, hb.scale) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
     } else {
-      Hull ha;
+      Hull ha, hb;
       if (hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore)
         return contact_hulls(a, ha, b, hb, speculative);
     }
