@@ -249,7 +249,8 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
   out.normal = ax.normal;
   out.depth = std::max(Calc(0), ax.depth);
   if (ax.owner < 0) {
-    out.points[0] = (p[0] + q[0]) * 0.5;
+    // Two points: the surfaces along the normal are p + n rp and q - n rq; the point between them.
+    out.points[0] = (p[0] + q[0]) * 0.5 + ax.normal * ((p.radius - q.radius) * 0.5);
     out.separations[0] = -ax.depth;
     out.count = 1;
     return out;

@@ -151,7 +151,7 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
       out.depth = ra + rb;
       out.separations[0] = -out.depth;
     }
-    out.points[0] = (ca + cb) * 0.5;
+    out.points[0] = (ca + cb) * 0.5 + out.normal * ((ra - rb) * 0.5);
   }
   return out;
 }
