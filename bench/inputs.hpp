@@ -33,6 +33,7 @@ struct CircleIn {
 struct AabbIn {
   collide::Aabb<float> c;
   b2AABB b;
+  b2PolygonShape p;  ///< the same box as a Box2D polygon, for its manifold functions
 };
 struct ObbIn {
   collide::Obb<float> c;
@@ -65,9 +66,11 @@ class Maker {
   AabbIn aabb(const V& at) {
     const V h(uniform(0.5f, 2.0f), uniform(0.5f, 2.0f));
     const V lo = at - h, hi = at + h;
-    AabbIn s{collide::Aabb<float>(lo, hi), {}};
+    AabbIn s{collide::Aabb<float>(lo, hi), {}, {}};
     s.b.lowerBound = to_b2(lo);
     s.b.upperBound = to_b2(hi);
+    s.p.SetAsBox(h.x(), h.y(), to_b2(at), 0.0f);
+    s.p.m_radius = 0;
     return s;
   }
   ObbIn obb(const V& at) {

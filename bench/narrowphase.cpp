@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace bench {
@@ -28,6 +29,7 @@ const b2Transform kXf = identity();
 
 // ---- Box2D boolean overlap (b2TestOverlap, skins 0) ----------------------------------------
 inline bool b2_overlap(const AabbIn& a, const AabbIn& b) { return b2TestOverlap(a.b, b.b); }
+inline bool b2_overlap(const CircleIn& a, const AabbIn& b) { return b2TestOverlap(&a.b, 0, &b.p, 0, kXf, kXf); }
 template <class A, class B>
 inline bool b2_overlap(const A& a, const B& b) {
   return b2TestOverlap(&a.b, 0, &b.b, 0, kXf, kXf);
@@ -47,45 +49,36 @@ inline B2Contact from_manifold(const b2Manifold& m, const b2Shape& sa, const b2S
   for (int i = 1; i < m.pointCount; ++i) sep = std::min(sep, wm.separations[i]);
   return {true, -sep, flip ? -wm.normal : wm.normal};
 }
-inline std::optional<B2Contact> b2_manifold(const CircleIn& a, const CircleIn& b) {
-  b2Manifold m;
-  b2CollideCircles(&m, &a.b, kXf, &b.b, kXf);
-  return from_manifold(m, a.b, b.b, false);
+// The shape Box2D's manifold functions take (an AABB as its polygon form).
+inline const b2CircleShape& b2_shape(const CircleIn& s) { return s.b; }
+inline const b2PolygonShape& b2_shape(const AabbIn& s) { return s.p; }
+inline const b2PolygonShape& b2_shape(const ObbIn& s) { return s.b; }
+inline const b2PolygonShape& b2_shape(const HullIn& s) { return s.b; }
+// The manifold function of a pair; a circle against a polygon is asked polygon first.
+inline void b2_collide(b2Manifold* m, const b2CircleShape& a, const b2CircleShape& b) {
+  b2CollideCircles(m, &a, kXf, &b, kXf);
 }
-inline std::optional<B2Contact> b2_manifold(const CircleIn& a, const ObbIn& b) {
-  b2Manifold m;
-  b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);  // Box2D takes the polygon first
-  return from_manifold(m, b.b, a.b, true);
+inline void b2_collide(b2Manifold* m, const b2CircleShape& a, const b2PolygonShape& b) {
+  b2CollidePolygonAndCircle(m, &b, kXf, &a, kXf);
 }
-inline std::optional<B2Contact> b2_manifold(const ObbIn& a, const ObbIn& b) {
-  b2Manifold m;
-  b2CollidePolygons(&m, &a.b, kXf, &b.b, kXf);
-  return from_manifold(m, a.b, b.b, false);
+inline void b2_collide(b2Manifold* m, const b2PolygonShape& a, const b2PolygonShape& b) {
+  b2CollidePolygons(m, &a, kXf, &b, kXf);
 }
-inline std::optional<B2Contact> b2_manifold(const HullIn& a, const HullIn& b) {
+template <class A, class B>
+  requires requires(b2Manifold* m, const A& a, const B& b) { b2_collide(m, b2_shape(a), b2_shape(b)); }
+std::optional<B2Contact> b2_manifold(const A& a, const B& b) {
   b2Manifold m;
-  b2CollidePolygons(&m, &a.b, kXf, &b.b, kXf);
-  return from_manifold(m, a.b, b.b, false);
+  b2_collide(&m, b2_shape(a), b2_shape(b));
+  constexpr bool polygon_first = std::is_same_v<A, CircleIn> && !std::is_same_v<B, CircleIn>;
+  if constexpr (polygon_first) return from_manifold(m, b2_shape(b), b2_shape(a), true);
+  return from_manifold(m, b2_shape(a), b2_shape(b), false);
 }
 // Manifold call without the world-manifold post-processing, for timing.
-inline int b2_manifold_points(const CircleIn& a, const CircleIn& b) {
+template <class A, class B>
+  requires requires(b2Manifold* m, const A& a, const B& b) { b2_collide(m, b2_shape(a), b2_shape(b)); }
+int b2_manifold_points(const A& a, const B& b) {
   b2Manifold m;
-  b2CollideCircles(&m, &a.b, kXf, &b.b, kXf);
-  return m.pointCount;
-}
-inline int b2_manifold_points(const CircleIn& a, const ObbIn& b) {
-  b2Manifold m;
-  b2CollidePolygonAndCircle(&m, &b.b, kXf, &a.b, kXf);
-  return m.pointCount;
-}
-inline int b2_manifold_points(const ObbIn& a, const ObbIn& b) {
-  b2Manifold m;
-  b2CollidePolygons(&m, &a.b, kXf, &b.b, kXf);
-  return m.pointCount;
-}
-inline int b2_manifold_points(const HullIn& a, const HullIn& b) {
-  b2Manifold m;
-  b2CollidePolygons(&m, &a.b, kXf, &b.b, kXf);
+  b2_collide(&m, b2_shape(a), b2_shape(b));
   return m.pointCount;
 }
 template <class A, class B>
@@ -262,6 +255,8 @@ bool register_narrowphase() {
   ok = add_pair<AabbIn, AabbIn>(K::Aabb, K::Aabb, 1.7f, &Maker::aabb, &Maker::aabb, 2) && ok;
   ok = add_pair<ObbIn, ObbIn>(K::Obb, K::Obb, 1.6f, &Maker::obb, &Maker::obb, 3) && ok;
   ok = add_pair<CircleIn, ObbIn>(K::Circle, K::Obb, 1.8f, &Maker::circle, &Maker::obb, 4) && ok;
+  ok = add_pair<CircleIn, AabbIn>(K::Circle, K::Aabb, 1.8f, &Maker::circle, &Maker::aabb, 9) && ok;
+  ok = add_pair<CircleIn, HullIn>(K::Circle, K::Polygon, 1.5f, &Maker::circle, &Maker::hull, 10) && ok;
   ok = add_pair<CapsuleIn, CapsuleIn>(K::Capsule, K::Capsule, 1.4f, &Maker::capsule, &Maker::capsule, 5) && ok;
   ok = add_pair<HullIn, HullIn>(K::Polygon, K::Polygon, 1.3f, &Maker::hull, &Maker::hull, 6) && ok;
   ok = add_touching<CircleIn>(K::Circle, &Maker::touching_circles, 7) && ok;

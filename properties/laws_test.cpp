@@ -191,6 +191,9 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     case Law::Resolution: return simple(&laws::resolution<T>);
     case Law::Contact: return simple(&laws::contact_law<T>);
     case Law::Distance: return simple(&laws::distance_law<T>);
+    case Law::Separation: return simple(&laws::manifold_separation<T>);
+    case Law::FeatureIds: return simple(&laws::manifold_ids<T>);
+    case Law::Speculative: return simple(&laws::manifold_speculative<T>);
     case Law::Touching:
       return [=] {
         const auto [a, b] = gen_touching_pair<T>(ka, kb);

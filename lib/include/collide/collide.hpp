@@ -8,7 +8,11 @@
 #include "collide/contains.hpp"
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
+<<<<<<< HEAD
 #include "collide/image.hpp"
+=======
+#include "collide/feature.hpp"
+>>>>>>> m
 #include "collide/predicates.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"

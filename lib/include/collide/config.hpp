@@ -66,6 +66,12 @@ inline constexpr Calc kFaceTieTolerance = 0x1p-40;
 /// reference face is long); the witness point is used instead.
 inline constexpr Calc kClipLengthRatio = 0x1p40;
 
+/// Contact generation: a face replaces an earlier one as the face of least penetration only when
+/// shallower by more than this many units of roundoff of the pair's scale (a quarter of
+/// kOverlapErrorFactor), so that faces equally deep up to rounding keep their order and their
+/// feature ids while the pair moves.
+inline constexpr Calc kFaceOrderTie = 16.0;
+
 /// Absolute floor of the error bounds of rounded outputs (about 3.1e-151; decisions are exact
 /// and need none). A bound, not the typical error: shapes whose every value is below 2^-400 are
 /// rescaled exactly by a power of two before any rounded computation (see detail::tiny_scale), so

@@ -29,7 +29,9 @@
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
+#include "collide/feature.hpp"
 #include "collide/detail/contact_cores.hpp"
+#include "collide/detail/contact_pairs.hpp"
 #include "collide/detail/core.hpp"
 #include "collide/registry.hpp"
 #include "collide/shape_traits.hpp"
@@ -39,6 +41,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -136,13 +139,21 @@ Calc overlap_tolerance(const A& a, const B& b) noexcept {
 // ---------------------------------------------------------------------------------------------
 // Contact.
 
-/// Where two overlapping shapes touch.
+/// Where two shapes touch: a contact manifold of one or two points, for a physics solver.
+///
+/// Units are the shapes' own; the normal points from a toward b. A point's separation is the
+/// signed distance between the two surfaces along the normal at that point: negative when they
+/// penetrate (then -separation is that point's penetration), positive for a speculative point of
+/// shapes still apart. The point itself lies midway between the surfaces, so a's surface point is
+/// point - normal * separation / 2 and b's is point + normal * separation / 2.
 template <Scalar T>
 struct Contact {
   Vec2<T> normal;  ///< unit vector pointing from a toward b (a moves along -normal to separate)
-  T depth;         ///< penetration depth along normal, >= 0 (0 when only touching)
-  int count;       ///< number of valid entries in points: 1 or 2
+  T depth;         ///< penetration depth along normal, >= 0 (0 when only touching or apart)
+  int count;       ///< number of valid entries in points, ids and separations: 1 or 2
   std::array<Vec2<T>, 2> points;  ///< contact points, midway between the two surfaces
+  std::array<FeatureId, 2> ids;   ///< per point, the features of a and b that produced it (feature.hpp)
+  std::array<T, 2> separations;   ///< per point, signed surface distance along normal (< 0 penetrating)
 };
 
 namespace detail {
@@ -153,33 +164,82 @@ Contact<T> to_scalar(const CoreContact& c) {
   out.normal = c.normal.template cast<T>();
   out.depth = static_cast<T>(c.depth);
   out.count = c.count;
-  for (std::size_t i = 0; i < 2; ++i) out.points[i] = c.points[i].template cast<T>();
+  for (std::size_t i = 0; i < 2; ++i) {
+    out.points[i] = c.points[i].template cast<T>();
+    out.ids[i] = c.ids[i];
+    out.separations[i] = static_cast<T>(c.separations[i]);
+  }
   return out;
 }
 
+/// The contact of two primitives in either order (contact_pair() takes registry order; the other
+/// order is the same contact seen from b: normal reversed, ids swapped). A stored float shape met
+/// by a double image (a transformed query) is widened first, exactly.
+template <PrimitiveShape A, PrimitiveShape B>
+std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc speculative) {
+  if constexpr (!std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>) {
+    if constexpr (std::is_same_v<scalar_of_t<A>, float>) {
+      return contact_primitives(widened_shape(a), b, speculative);
+    } else {
+      return contact_primitives(a, widened_shape(b), speculative);
+    }
+  } else if constexpr (static_cast<int>(kind_of_v<A>) <= static_cast<int>(kind_of_v<B>)) {
+    return contact_pair(a, b, speculative);
+  } else {
+    std::optional<CoreContact> c = contact_pair(b, a, speculative);
+    if (c) {
+      c->normal = -c->normal;
+      for (FeatureId& id : c->ids) id = id.swapped();
+    }
+    return c;
+  }
+}
+
+/// Overlapping contacts before speculative ones, then the deeper (or the nearer).
+inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexcept {
+  if (c.overlapping != than.overlapping) return c.overlapping;
+  return c.overlapping ? c.depth > than.depth : c.separations[0] < than.separations[0];
+}
+
+/// The contact of concrete shapes, stored or placed (images, placed compounds).
 template <class A, class B>
-std::optional<CoreContact> contact_concrete(const A& a, const B& b) {
-  if (!overlaps_concrete(a, b)) return std::nullopt;
-  std::optional<CoreContact> best;
-  for_each_primitive(a, [&](const auto& ca) {
-    for_each_primitive(b, [&](const auto& cb) {
-      if (!decide_primitives(ca, cb)) return;
-      const CoreContact c = contact_cores(core_of(ca), core_of(cb));
-      if (!best || c.depth > best->depth) best = c;
+std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc speculative = 0) {
+  if constexpr (is_compound_v<A> || is_compound_v<B>) {
+    // The cached bounding boxes first (without a speculative distance), then every child pair.
+    if (!(speculative > 0) && !decide::aabb_aabb(calc_bounds(a), calc_bounds(b))) return std::nullopt;
+    std::optional<CoreContact> best;
+    std::uint16_t ia = 0;
+    for_each_primitive(a, [&](const auto& ca) {
+      std::uint16_t ib = 0;
+      for_each_primitive(b, [&](const auto& cb) {
+        std::optional<CoreContact> c = contact_primitives(ca, cb, speculative);
+        if (c && (!best || deeper_contact(*c, *best))) {
+          for (FeatureId& id : c->ids) {
+            id.child_a = ia;
+            id.child_b = ib;
+          }
+          best = c;
+        }
+        ++ib;
+      });
+      ++ia;
     });
-  });
-  return best;
+    return best;
+  } else {
+    return contact_primitives(a, b, speculative);
+  }
 }
 
 }  // namespace detail
 
 namespace detail {
 
-/// contact() with its result in T, for shapes stored or placed.
+/// contact() with its result in T, for shapes stored or placed; speculative as contact() takes it.
 template <Scalar T, class A, class B>
-std::optional<Contact<T>> contact_as(const A& a, const B& b) {
+std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0)) {
+  const Calc spec = speculative > 0 ? Calc(speculative) : Calc(0);
   const std::optional<CoreContact> c = visit_shape(a, [&](const auto& ca) {
-    return visit_shape(b, [&](const auto& cb) { return contact_concrete(ca, cb); });
+    return visit_shape(b, [&](const auto& cb) { return contact_concrete(ca, cb, spec); });
   });
   if (!c) return std::nullopt;
   return to_scalar<T>(*c);
@@ -187,13 +247,31 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b) {
 
 }  // namespace detail
 
+/// Contact with a speculative distance (in the shapes' units), as a solver uses to stop shapes
+/// before they meet: present when overlaps(a, b), and also when the shapes are apart by at most
+/// `speculative` (decided on the rounded gap: a pair within a few rounding_tolerance(a, b) of
+/// that distance may go either way). A speculative contact of shapes apart has depth 0 and one
+/// point between the closest points, its separation the gap (> 0 up to rounding); an overlapping
+/// pair keeps the points of contact(a, b) and adds clipped points apart by at most `speculative`.
+/// overlaps() stays the exact answer. A negative or NaN `speculative` counts as 0 (contact(a, b));
+/// an infinite one reports every pair. For compounds, an overlapping child pair wins over the
+/// nearest pair apart.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b, scalar_of_t<A> speculative) {
+  return detail::contact_as<scalar_of_t<A>>(a, b, speculative);
+}
+
 /// Contact of two shapes: present exactly when overlaps(a, b). For a compound, the deepest contact
-/// among its overlapping child pairs. Coincident circle centres give normal (1, 0).
-/// Error: normal and depth are rounded results (depth within a few rounding_tolerance of exact).
+/// among its overlapping child pairs (the ids name the children). Coincident circle centres give
+/// normal (1, 0).
+/// Error: normal, depth, points and separations are rounded results, each within a few
+/// rounding_tolerance(a, b) of the exact values (depth of the exact depth; each separation of the
+/// exact signed distance of the surfaces along the normal at its point).
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
-  return detail::contact_as<scalar_of_t<A>>(a, b);
+  return contact(a, b, scalar_of_t<A>(0));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -292,6 +292,9 @@ Verdict replay_as(const Case& c) {
     case Law::Contains: return contains_law(shape_a(), Vec2<T>(narrow<T>(c.ox), narrow<T>(c.oy)));
     case Law::Touching: return touching(shape_a(), shape_b());
     case Law::Scene: return scene(shape_a());
+    case Law::Separation: return manifold_separation(shape_a(), shape_b());
+    case Law::FeatureIds: return manifold_ids(shape_a(), shape_b());
+    case Law::Speculative: return manifold_speculative(shape_a(), shape_b());
   }
   throw CaseError("unknown law");
 }

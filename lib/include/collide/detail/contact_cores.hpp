@@ -9,10 +9,15 @@
 ///   4. clip_to_reference_face: the incident face clipped to the reference face's side planes.
 ///   5. keep_points_within_reach: the clipped ends deep enough, each moved midway between surfaces.
 ///   6. find_witness_point: when clipping found nothing, the candidate nearest to both shapes.
-/// Everything is computed in Calc (double); Contact<T> in queries.hpp is the result rounded to T.
+/// Each point carries its feature id (feature.hpp) and its separation: the signed distance between
+/// the two surfaces along the normal at that point (negative when penetrating). A speculative
+/// distance keeps clipped points apart by up to it; speculative_contact_cores() is the contact of
+/// cores that do not overlap. Everything is computed in Calc (double); Contact<T> in queries.hpp
+/// is the result rounded to T.
 
 #include "collide/config.hpp"
 #include "collide/detail/core.hpp"
+#include "collide/feature.hpp"
 
 #include <algorithm>
 #include <array>
@@ -27,26 +32,46 @@ struct CoreContact {
   Vec2c normal = Vec2c(1, 0);  ///< unit, from the first core toward the second
   Calc depth = 0;              ///< penetration along normal, >= 0
   int count = 0;               ///< valid entries in points: 1 or 2
+  bool overlapping = true;     ///< false for a speculative contact of shapes apart
   std::array<Vec2c, 2> points{Vec2c::Zero(), Vec2c::Zero()};
+  std::array<Calc, 2> separations{0, 0};  ///< per point, signed distance of the surfaces along normal
+  std::array<FeatureId, 2> ids{};         ///< per point, the features that produced it
 };
 
-/// Step 1: cores apart, radii overlapping. Contact along the closest points, or nullopt when the
-/// gap is at the level of rounding (a point that misses a segment through it only because the
-/// segment's ends were rounded): such a gap has no reliable direction, the faces decide instead.
-inline std::optional<CoreContact> contact_of_separate_cores(const Core& p, const Core& q) {
-  const Closest cl = closest_points(p, q);
-  const Calc d = norm_of(cl.on_q - cl.on_p);
+/// The feature id of a point from the features of the first and of the second core.
+inline FeatureId id_of(const CoreFeature& p, const CoreFeature& q) noexcept {
+  return {0, 0, static_cast<std::uint8_t>(p.index), static_cast<std::uint8_t>(q.index),
+          p.edge ? FeatureKind::Edge : FeatureKind::Vertex, q.edge ? FeatureKind::Edge : FeatureKind::Vertex};
+}
+
+/// The largest absolute coordinate of two cores' points (their rounding scale).
+inline Calc point_scale(const Core& p, const Core& q) noexcept {
   Calc scale = 0;
   for (const Vec2c& x : p.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
   for (const Vec2c& x : q.pts()) scale = std::max(scale, x.cwiseAbs().maxCoeff());
-  if (!(d > kOverlapErrorFactor * kUnitRoundoff * scale)) return std::nullopt;
+  return scale;
+}
+
+/// Step 1 from the closest points cl of the cores p and q (see contact_of_separate_cores()).
+inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core& q, const Closest& cl) {
+  const Calc d = norm_of(cl.on_q - cl.on_p);
+  if (!(d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
   CoreContact out;
   out.normal = unit_of(cl.on_q - cl.on_p);
   out.depth = std::max(Calc(0), p.radius + q.radius - d);
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
+  out.separations[0] = d - p.radius - q.radius;
+  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
   out.count = 1;
   return out;
+}
+
+/// Step 1: cores apart, radii overlapping. Contact along the closest points, or nullopt when the
+/// gap is at the level of rounding (a point that misses a segment through it only because the
+/// segment's ends were rounded): such a gap has no reliable direction, the faces decide instead.
+inline std::optional<CoreContact> contact_of_separate_cores(const Core& p, const Core& q) {
+  return contact_from_closest(p, q, closest_points(p, q));
 }
 
 /// The face of least penetration: which core owns it, its ends and its outward normal.
@@ -55,11 +80,13 @@ struct ReferenceFace {
   const Core* inc;  ///< the other core
   Vec2c r1, r2;     ///< the face's ends, counter-clockwise on ref
   Vec2c normal;     ///< outward normal of the face, toward inc
+  int owner;        ///< 0: the first core owns the face, 1: the second
+  unsigned face;    ///< the face's edge index on ref
 };
 
 /// Step 2: the reference face of the least-penetration axis (owner >= 0).
 inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axis& ax) {
-  ReferenceFace f{ax.owner == 0 ? &p : &q, ax.owner == 0 ? &q : &p, {}, {}, {}};
+  ReferenceFace f{ax.owner == 0 ? &p : &q, ax.owner == 0 ? &q : &p, {}, {}, {}, ax.owner, ax.face};
   f.normal = ax.owner == 0 ? ax.normal : Vec2c(-ax.normal);
   const Core& ref = *f.ref;
   if (ref.size() == 2) {
@@ -75,6 +102,7 @@ inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axi
 /// The incident face (one or two points) as it is clipped.
 struct IncidentFace {
   std::array<Vec2c, 2> ends{};
+  std::array<unsigned, 2> vertices{0, 0};  ///< the incident core's vertex index of each end
   int count = 0;
 };
 
@@ -92,12 +120,17 @@ inline IncidentFace find_incident_face(const ReferenceFace& f) {
   }
   if (inc.size() == 2) {
     out.ends = {inc[0], inc[1]};
+    out.vertices = {0, 1};
     out.count = 2;
     return out;
   }
+  std::array<Calc, 8> dots{};  // the alignments of the first 8 faces, computed once
   auto anti_parallel = [&](std::size_t j) {
+    if (j < dots.size() && dots[j] != 0) return dots[j];
     const Vec2c e = inc[(j + 1) % inc.size()] - inc[j];
-    return Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+    const Calc dot = Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+    if (j < dots.size()) dots[j] = dot;
+    return dot;
   };
   std::size_t best = 0;
   Calc best_dot = std::numeric_limits<Calc>::infinity();
@@ -122,6 +155,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f) {
     }
   }
   out.ends = {inc[best], inc[(best + 1) % inc.size()]};
+  out.vertices = {unsigned(best), unsigned((best + 1) % inc.size())};
   out.count = 2;
   return out;
 }
@@ -148,13 +182,25 @@ inline bool clip_to_reference_face(IncidentFace& face, const ReferenceFace& f) {
   return true;
 }
 
-/// Step 5: the clipped ends within reach of the radii, each moved midway between the surfaces.
-inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out) {
+/// The id of a point on the reference face (an edge of ref) from the incident vertex v.
+inline FeatureId face_point_id(const ReferenceFace& f, unsigned v) noexcept {
+  const CoreFeature face{f.face, true}, vertex{v, false};
+  return f.owner == 0 ? id_of(face, vertex) : id_of(vertex, face);
+}
+
+/// Step 5: the clipped ends within reach of the radii plus the speculative distance, each moved
+/// midway between the surfaces, with its separation (s - the radii).
+inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out,
+                                     Calc speculative = 0) {
   const Calc ref_radius = f.ref->radius, inc_radius = f.inc->radius;
-  const Calc reach = ref_radius + inc_radius;
+  const Calc reach = ref_radius + inc_radius + speculative;
   for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
     const Calc s = (face.ends[i] - f.r1).dot(f.normal);
-    if (s <= reach) out.points[std::size_t(out.count++)] = face.ends[i] + f.normal * ((ref_radius - s - inc_radius) * 0.5);
+    if (s > reach) continue;
+    const std::size_t k = std::size_t(out.count++);
+    out.points[k] = face.ends[i] + f.normal * ((ref_radius - s - inc_radius) * 0.5);
+    out.separations[k] = s - ref_radius - inc_radius;
+    out.ids[k] = face_point_id(f, face.vertices[i]);
   }
   if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
 }
@@ -173,7 +219,7 @@ inline Calc excess_over(const Vec2c& x, const Core& c) {
 /// moved halfway to the reference surface, the reference face's midpoint moved halfway to the
 /// incident surface, or a vertex of either core (often inside the other, when the shapes differ
 /// in size by orders of magnitude).
-inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFace& f, Calc depth) {
+inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFace& f, Calc depth, unsigned& deepest) {
   const Core& inc = *f.inc;
   Calc best = std::numeric_limits<Calc>::infinity();
   Vec2c witness = p[0];
@@ -188,6 +234,7 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   for (std::size_t j = 1; j < inc.size(); ++j) {
     if ((inc[j] - f.r1).dot(f.normal) < (inc[k] - f.r1).dot(f.normal)) k = j;
   }
+  deepest = unsigned(k);
   const Calc s = (inc[k] - f.r1).dot(f.normal);
   consider_witness(inc[k] + f.normal * ((f.ref->radius - s - inc.radius) * 0.5));
   consider_witness((f.r1 + f.r2) * 0.5 + f.normal * (f.ref->radius - depth * 0.5));
@@ -196,38 +243,89 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   return witness;
 }
 
-/// Contact of two dilated cores known to overlap, at their own scale (see contact_cores()).
-inline CoreContact contact_cores_at_scale(const Core& p, const Core& q) {
-  if (!cores_intersect(p, q)) {
-    if (const std::optional<CoreContact> c = contact_of_separate_cores(p, q)) return *c;
-  }
-  const Axis ax = least_penetration(p, q);
+/// Steps 2 to 6 from the axis of least penetration of two cores known to overlap.
+inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& ax, Calc speculative = 0) {
   CoreContact out;
   out.normal = ax.normal;
   out.depth = std::max(Calc(0), ax.depth);
   if (ax.owner < 0) {
-    out.points[0] = (p[0] + q[0]) * 0.5;
+    // Two points: the surfaces along the normal are p + n rp and q - n rq; the point between them.
+    out.points[0] = (p[0] + q[0]) * 0.5 + ax.normal * ((p.radius - q.radius) * 0.5);
+    out.separations[0] = -ax.depth;
     out.count = 1;
     return out;
   }
   const ReferenceFace f = find_reference_face(p, q, ax);
   IncidentFace face = find_incident_face(f);
-  if (clip_to_reference_face(face, f)) keep_points_within_reach(face, f, out);
+  if (clip_to_reference_face(face, f)) keep_points_within_reach(face, f, out, speculative);
   if (out.count == 0) {
-    out.points[0] = find_witness_point(p, q, f, out.depth);
+    unsigned deepest = 0;
+    out.points[0] = find_witness_point(p, q, f, out.depth, deepest);
+    out.separations[0] = -out.depth;
+    out.ids[0] = face_point_id(f, deepest);
     out.count = 1;
   }
   return out;
 }
 
-/// contact_cores_at_scale() after exact rescaling of tiny cores (see tiny_scale()).
-inline CoreContact contact_cores(const Core& p, const Core& q) {
-  const int k = tiny_scale(p, q);
-  if (k == 0) return contact_cores_at_scale(p, q);
-  CoreContact c = contact_cores_at_scale(scaled(p, k), scaled(q, k));
+/// The tolerance within which a face does not take over from an equally deep face found before it
+/// (feature.hpp: ids stay put for parallel faces): a quarter of the pair's rounding unit, so that
+/// the chosen depth (within 2 ties of the least) stays within half a unit in either argument order.
+inline Calc owner_tie(const Core& p, const Core& q) noexcept {
+  return kFaceOrderTie * kUnitRoundoff * point_scale(p, q);
+}
+
+/// Contact of two dilated cores known to overlap, at their own scale (see contact_cores()).
+/// cores_meet: the caller knows the cores themselves intersect (radius-free shapes that overlap).
+inline CoreContact contact_cores_at_scale(const Core& p, const Core& q, Calc speculative = 0, bool cores_meet = false) {
+  if (!cores_meet && !cores_intersect(p, q)) {
+    if (const std::optional<CoreContact> c = contact_of_separate_cores(p, q)) return *c;
+  }
+  return contact_from_axis(p, q, least_penetration(p, q, owner_tie(p, q)), speculative);
+}
+
+/// The contact scaled back by 2^-k (after exact rescaling of tiny cores).
+inline CoreContact unscaled(CoreContact c, int k) {
   c.depth = std::ldexp(c.depth, -k);
   for (Vec2c& pt : c.points) pt = Vec2c(std::ldexp(pt.x(), -k), std::ldexp(pt.y(), -k));
+  for (Calc& s : c.separations) s = std::ldexp(s, -k);
   return c;
+}
+
+/// contact_cores_at_scale() after exact rescaling of tiny cores (see tiny_scale()).
+inline CoreContact contact_cores(const Core& p, const Core& q, Calc speculative = 0, bool cores_meet = false) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return contact_cores_at_scale(p, q, speculative, cores_meet);
+  return unscaled(contact_cores_at_scale(scaled(p, k), scaled(q, k), std::ldexp(speculative, k), cores_meet), k);
+}
+
+/// Speculative contact of two dilated cores that do not overlap, at their own scale: one point
+/// between the closest points, its separation the gap; nullopt when the gap exceeds speculative.
+/// A gap at the level of rounding takes its normal from the faces (as contact_of_separate_cores).
+inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, const Core& q, Calc speculative) {
+  const Closest cl = closest_points(p, q);
+  const Calc d = norm_of(cl.on_q - cl.on_p);
+  const Calc gap = std::max(Calc(0), d - p.radius - q.radius);
+  if (!(gap <= speculative)) return std::nullopt;
+  CoreContact out;
+  out.overlapping = false;
+  out.normal = d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q) ? unit_of(cl.on_q - cl.on_p)
+                                                                          : least_penetration(p, q).normal;
+  const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
+  out.points[0] = sp + (sq - sp) * 0.5;
+  out.separations[0] = gap;
+  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  out.count = 1;
+  return out;
+}
+
+/// speculative_contact_at_scale() after exact rescaling of tiny cores.
+inline std::optional<CoreContact> speculative_contact_cores(const Core& p, const Core& q, Calc speculative) {
+  const int k = tiny_scale(p, q);
+  if (k == 0) return speculative_contact_at_scale(p, q, speculative);
+  const std::optional<CoreContact> c = speculative_contact_at_scale(scaled(p, k), scaled(q, k), std::ldexp(speculative, k));
+  if (!c) return std::nullopt;
+  return unscaled(*c, k);
 }
 
 /// Distance between two dilated cores that do not overlap (rescaled when tiny).

@@ -22,13 +22,11 @@ class Core {
  public:
   Core() = default;
   void push(const Vec2c& p) {
-    if (n_ < small_.size()) {
-      small_[n_] = p;
-    } else {
-      if (big_.empty()) big_.assign(small_.begin(), small_.end());
-      big_.push_back(p);
+    if (n_ < small_.size()) [[likely]] {
+      small_[n_++] = p;
+      return;
     }
-    ++n_;
+    push_big(p);
   }
   std::span<const Vec2c> pts() const noexcept {
     return {n_ > small_.size() ? big_.data() : small_.data(), n_};
@@ -38,6 +36,11 @@ class Core {
   Calc radius = 0;
 
  private:
+  void push_big(const Vec2c& p) {
+    if (big_.empty()) big_.assign(small_.begin(), small_.end());
+    big_.push_back(p);
+    ++n_;
+  }
   std::array<Vec2c, 8> small_{};
   std::vector<Vec2c> big_;
   std::size_t n_ = 0;
@@ -254,46 +257,60 @@ inline bool cores_intersect(const Core& p, const Core& q) noexcept {
 // ---------------------------------------------------------------------------------------------
 // Distances between cores (rounded; used where the cores do not intersect).
 
+/// A feature of a core as a contact point names it (see feature.hpp): vertex or edge, and index.
+struct CoreFeature {
+  unsigned index = 0;
+  bool edge = false;
+};
+
 struct Closest {
   Calc dist2 = std::numeric_limits<Calc>::infinity();
   Vec2c on_p = Vec2c::Zero();  ///< closest point of the first core
   Vec2c on_q = Vec2c::Zero();  ///< closest point of the second core
+  CoreFeature feature_p{};     ///< the feature of the first core that on_p lies on
+  CoreFeature feature_q{};     ///< the feature of the second core that on_q lies on
 };
 
-/// Closest point to p on segment [a, b].
-inline Vec2c closest_on_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
-  const Vec2c d = b - a;
-  const Calc dd = d.squaredNorm();
-  if (!(dd > 0)) return a;
-  const Calc t = std::clamp((p - a).dot(d) / dd, Calc(0), Calc(1));
-  return a + d * t;
-}
-
-inline void consider(Closest& best, const Vec2c& on_p, const Vec2c& on_q) noexcept {
-  const Calc d2 = (on_q - on_p).squaredNorm();
-  if (d2 < best.dist2) best = {d2, on_p, on_q};
-}
-
-/// Closest points between two cores' boundaries; exact only up to rounding. Meaningful when the
-/// cores do not intersect (then the closest pair involves a vertex of one of them).
-inline Closest closest_points(const Core& p, const Core& q) noexcept {
-  Closest best;
-  auto vertex_vs = [&best](std::span<const Vec2c> pts, std::span<const Vec2c> edges, bool swap) {
+/// Updates best with the closest pairs between the points pts and the edges of the core whose
+/// points are `edges` (swap: the edges belong to the first core).
+inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts, std::span<const Vec2c> edges,
+                                       bool swap, std::size_t first = 0, std::size_t count = 8) noexcept {
+  {
     const std::size_t n = edges.size();
-    for (const Vec2c& v : pts) {
-      if (n == 1) {
-        swap ? consider(best, edges[0], v) : consider(best, v, edges[0]);
-        continue;
-      }
-      const std::size_t m = n == 2 ? 1 : n;
-      for (std::size_t i = 0; i < m; ++i) {
-        const Vec2c c = closest_on_segment(v, edges[i], edges[(i + 1) % n]);
-        swap ? consider(best, c, v) : consider(best, v, c);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const Vec2c& v = pts[k];
+      const std::size_t m = n == 1 ? 1 : (n == 2 ? 1 : std::min(n, count));
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t i = n <= 2 ? j : (first + j) % n;
+        const Vec2c& a = edges[i];
+        const Vec2c& b = edges[(i + 1) % n];
+        const Vec2c d = b - a;
+        const Calc dd = d.squaredNorm();
+        const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
+        const Vec2c c = a + d * t;
+        const Calc d2 = (v - c).squaredNorm();
+        if (!(d2 < best.dist2)) continue;
+        CoreFeature fe{unsigned(i), false};
+        if (t >= 1) {
+          fe.index = unsigned((i + 1) % n);
+        } else if (t > 0) {
+          fe.edge = true;  // a segment's side: 0 right of a -> b, 1 left
+          if (n == 2) fe.index = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x()) < 0 ? 0u : 1u;
+        }
+        const CoreFeature fv{unsigned(k), false};
+        best = swap ? Closest{d2, c, v, fe, fv} : Closest{d2, v, c, fv, fe};
       }
     }
-  };
-  vertex_vs(p.pts(), q.pts(), false);
-  vertex_vs(q.pts(), p.pts(), true);
+  }
+}
+
+/// Closest points between two cores' boundaries, with the features they lie on; exact only up to
+/// rounding. Meaningful when the cores do not intersect (then the closest pair involves a vertex
+/// of one of them).
+inline Closest closest_points(const Core& p, const Core& q) noexcept {
+  Closest best;
+  closest_of_points_to_edges(best, p.pts(), q.pts(), false, 0, q.size());
+  closest_of_points_to_edges(best, q.pts(), p.pts(), true, 0, p.size());
   return best;
 }
 
@@ -356,21 +373,44 @@ struct Axis {
   unsigned face = 0;
 };
 
-/// Axis of least penetration among the faces of both cores (Minkowski-difference faces).
-inline Axis least_penetration(const Core& p, const Core& q) {
-  Axis best;
-  best.depth = std::numeric_limits<Calc>::infinity();
+/// Axis of least penetration among the faces of both cores (Minkowski-difference faces), with
+/// each core's faces listed by faces_p / faces_q (called as faces(f), f(unit normal, index)); a
+/// face's own support is its first vertex's (the core's extreme along it, up to rounding). A
+/// face (of q over p, or a later face of one core over an earlier one) is taken over the best so
+/// far only when it is shallower by more than `tie`, so that faces equally deep up to rounding
+/// (parallel faces, a side split by a vertex one ulp off its line) keep their order while the
+/// pair moves, and the depth found is within 2 tie of the least. Stops at the first face
+/// shallower than `stop_below` and returns it (a separating face, when the caller needs only that).
+template <class FacesP, class FacesQ>
+Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie,
+                            Calc stop_below) {
+  Axis best, best_q;
+  best.depth = best_q.depth = std::numeric_limits<Calc>::infinity();
   const Calc r = p.radius + q.radius;
-  for_each_face(p, [&](const Vec2c& n, unsigned i) {
-    const Calc d = support(p, n) + support(q, -n) + r;
-    if (d < best.depth) best = {n, d, 0, i};
+  bool stop = false;
+  faces_p([&](const Vec2c& n, unsigned i) {
+    if (stop) return;
+    const Calc d = p[i].dot(n) + support(q, -n) + r;
+    stop = d < stop_below;
+    if (d < best.depth - tie || stop) best = {n, d, 0, i};
   });
-  for_each_face(q, [&](const Vec2c& n, unsigned i) {
-    const Calc d = support(q, n) + support(p, -n) + r;
-    if (d < best.depth) best = {Vec2c(-n), d, 1, i};
+  if (stop) return best;
+  faces_q([&](const Vec2c& n, unsigned i) {
+    if (stop) return;
+    const Calc d = q[i].dot(n) + support(p, -n) + r;
+    stop = d < stop_below;
+    if (d < best_q.depth - tie || stop) best_q = {Vec2c(-n), d, 1, i};
   });
+  if (best_q.depth < best.depth - tie || stop) best = best_q;
   if (best.owner < 0) best = {Vec2c(1, 0), r, -1, 0};  // two points: any direction will do
   return best;
+}
+
+/// least_penetration_with() over the faces of the cores' own edges (for_each_face).
+inline Axis least_penetration(const Core& p, const Core& q, Calc tie = 0,
+                              Calc stop_below = -std::numeric_limits<Calc>::infinity()) {
+  return least_penetration_with(
+      p, [&p](auto&& f) { for_each_face(p, f); }, q, [&q](auto&& f) { for_each_face(q, f); }, tie, stop_below);
 }
 
 }  // namespace collide::detail

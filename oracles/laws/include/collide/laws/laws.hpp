@@ -270,4 +270,39 @@ inline constexpr std::string_view kTransformLawNames[] = {"placed_agreement", "p
                                                           "placed_shape",     "placed_covariance", "placed_image",
                                                           "transform_rejection"};
 
+// ---------------------------------------------------------------------------------------------
+// Contact manifolds (oracles/laws/src/manifold_laws.cpp). The bound of a point below is
+// 4 rounding tolerances plus the rounding to T of the point (2 eps_T S) and of the separation,
+// and the normal's rounding over half the separation (8 eps_T |s|).
+
+/// Law 10a. Every point of contact(a, b) has a finite separation s <= bound (no speculative
+/// distance: penetrating or touching), and its surface points lie where s says: a's at
+/// p - normal s / 2 and b's at p + normal s / 2 each within the bound of that shape's boundary
+/// (oracle::compare_boundary_distance; a circle or capsule only needs to reach the point, since
+/// its surface at a tilted clipped face lies nearer than along the normal); and no point is deeper
+/// than the exact depth of its pair (oracle::compare_depth) by more than the bound. For compounds
+/// the pair is the children the point's id names.
+template <Scalar T>
+Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 10b. Feature ids of contact(a, b) (numbering in collide/feature.hpp): each id names an
+/// existing child, vertex or edge of each shape, lying within the shape's radius + bound + 4 depth
+/// of that shape's surface point (a vertex counts with its adjacent edges, along which a clipped
+/// point slides); two points have different ids; and stability: with b moved by +t and by -t
+/// (t = 2^-18 S (0.6, 0.8), S the pair's scale), when both moved pairs give contacts with the same
+/// ids and point count, the unmoved pair gives those ids too (the features did not change on the
+/// way). OBBs thinner than their corners' rounding are not rebuilt (named in the account).
+template <Scalar T>
+Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
+
+/// Law 10c. contact(a, b, speculative) with speculative = 2^(ilogb(size) - 3), size the larger
+/// bounding-box side: for overlapping pairs it exists, with contact(a, b)'s normal and depth and at
+/// least its point count; for pairs apart it exists when the exact gap is below speculative - bound
+/// and not when above speculative + bound; a speculative contact of shapes apart has depth 0, a
+/// unit normal along which a approaches b by its smallest separation less the bound without meeting
+/// it (oracle::separates), that separation within the bound of the exact gap, and every point's
+/// separation at most speculative + bound and judged as in manifold_separation.
+template <Scalar T>
+Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b);
+
 }  // namespace collide::laws

@@ -1,0 +1,310 @@
+#pragma once
+/// @file detail/contact_pairs.hpp
+/// The contact of two primitives in registry order, deciding presence exactly on the way: the
+/// rounded contact computation runs first, and the exact decision (decide.hpp) is asked only when
+/// its signed distance lies within the rounding band of touching. Specialised pairs:
+///   - circle-circle: analytically;
+///   - circle against a box: the centre's coordinates in the box's frame, clamped;
+///   - circle against a polygon: the centre's face excesses, then its closest point;
+///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
+///     normals (taken from the stored axes for boxes), then reference-face clipping.
+/// Every other pair (capsules, boxes flat on an axis, boxes thinner than their corners' rounding,
+/// polygons of more than 8 vertices, tiny shapes) decides exactly, then runs contact_cores().
+/// With a speculative distance, pairs apart by at most it get a speculative contact.
+
+#include "collide/decide.hpp"
+#include "collide/detail/contact_cores.hpp"
+#include "collide/detail/core.hpp"
+#include "collide/shape_traits.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <type_traits>
+
+namespace collide::detail {
+
+/// A box or polygon core with the unit outward normal of each edge. Box normals come from the
+/// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are computed
+/// from its edges when asked (most pairs apart stop at the first face).
+struct Hull {
+  Core core;
+  std::array<Vec2c, 4> box_normals;
+  bool box = false;
+  Calc scale = 0;  ///< the largest absolute coordinate of the core
+  /// Pushes the points and sets scale.
+  template <class Points>
+  void push_all(const Points& xs) {
+    Calc m = 0;
+    for (const auto& x : xs) {
+      const Vec2c p = widen(x);
+      core.push(p);
+      m = std::max(m, p.cwiseAbs().maxCoeff());
+    }
+    scale = m;
+  }
+  Vec2c normal(std::size_t i) const {
+    if (box) return box_normals[i];
+    const Vec2c d = core[(i + 1) % core.size()] - core[i];
+    const Calc dd = d.squaredNorm();
+    if (dd > 0x1p-1000 && dd < 0x1p1000) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
+    return unit_of(Vec2c(d.y(), -d.x()));
+  }
+};
+
+/// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
+/// scale s: every value entering it carries a few roundings of s (corners, differences, dots),
+/// below 32 units; 64 are used.
+inline Calc band_of(Calc s) noexcept { return kOverlapErrorFactor * kUnitRoundoff * s; }
+
+/// Builds h from a box whose core is a proper rectangle; false for a box flat on an axis.
+template <Scalar T>
+bool hull_of(const Aabb<T>& s, Hull& h) {
+  if (!(s.min().x() < s.max().x() && s.min().y() < s.max().y())) return false;
+  const Vec2c lo = widen(s.min()), hi = widen(s.max());
+  h.push_all(std::array<Vec2c, 4>{lo, Vec2c(hi.x(), lo.y()), hi, Vec2c(lo.x(), hi.y())});
+  h.box_normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
+  h.box = true;
+  return true;
+}
+
+/// Builds h from an oriented box whose four computed corners turn strictly left (core_of keeps
+/// them); false for boxes flat on an axis or thinner than their corners' rounding.
+template <Scalar T>
+bool hull_of(const Obb<T>& s, Hull& h) {
+  const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
+  const Vec2c c = widen(s.center()), w = widen(s.axis());
+  if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
+  // The corners as core_of() computes them (it keeps them in this order for such a box).
+  const Vec2c ex = w * Calc(s.half_extents().x()), ey = perp(w) * Calc(s.half_extents().y());
+  h.push_all(std::array<Vec2c, 4>{c - ex - ey, c + ex - ey, c + ex + ey, c - ex + ey});
+  const Calc ww = w.squaredNorm();  // within a few eps_T of 1
+  const Vec2c u = w / std::sqrt(ww), v = perp(u);
+  h.box_normals = {Vec2c(-v), u, v, Vec2c(-u)};
+  h.box = true;
+  return true;
+}
+
+/// Builds h from a polygon of at most 8 vertices (the rest take the generic path).
+template <Scalar T>
+bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
+  if (s.size() > ConvexPolygon<T>::kInline) return false;
+  h.push_all(s.vertices());
+  return true;
+}
+
+/// Calls f(normal, index) for each face of a hull.
+inline auto faces_of(const Hull& h) {
+  return [&h](auto&& f) {
+    for (std::size_t i = 0; i < h.core.size(); ++i) f(h.normal(i), unsigned(i));
+  };
+}
+
+/// The exact decision for a pair of primitives in registry order.
+template <class A, class B>
+bool decide_exactly(const A& a, const B& b) {
+  return decide::pair(a, b);
+}
+
+/// The contact of two primitives without a specialisation: the exact decision, then contact_cores().
+template <class A, class B>
+std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
+  const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
+                           !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
+  if (decide_exactly(a, b)) return contact_cores(core_of(a), core_of(b), speculative, radius_free);
+  if (speculative > 0) return speculative_contact_cores(core_of(a), core_of(b), speculative);
+  return std::nullopt;
+}
+
+/// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
+/// centres (within rounding) give normal (1, 0), as contact_cores() does.
+template <Scalar T>
+std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
+  const Vec2c ca = widen(a.center()), cb = widen(b.center());
+  const Calc ra = a.radius(), rb = b.radius();
+  const Calc s = std::max(ca.cwiseAbs().maxCoeff(), cb.cwiseAbs().maxCoeff());
+  if (!(std::max({s, ra, rb}) >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Vec2c d = cb - ca;
+  int sign = filtered_sign_dist2(d.x(), d.y(), ra + rb);
+  if (sign == 2) sign = decide::circle_circle(a, b) ? -1 : 1;
+  if (sign > 0 && !(speculative > 0)) return std::nullopt;
+  const Calc d2 = d.squaredNorm();
+  const bool plain = d2 > 0x1p-1000 && d2 < 0x1p1000;  // no underflow or overflow in the square
+  const Calc dist = plain ? std::sqrt(d2) : norm_of(d);
+  CoreContact out;
+  out.count = 1;
+  if (sign > 0) {
+    out.overlapping = false;
+    out.separations[0] = std::max(Calc(0), dist - ra - rb);
+    if (!(out.separations[0] <= speculative)) return std::nullopt;
+  } else {
+    out.separations[0] = dist - ra - rb;
+  }
+  if (dist > band_of(s)) {
+    out.normal = plain ? Vec2c(d / dist) : unit_of(d);
+    out.depth = std::max(Calc(0), -out.separations[0]);
+    out.points[0] = ca + out.normal * (ra + out.separations[0] * 0.5);
+  } else {
+    if (sign <= 0) {
+      out.depth = ra + rb;
+      out.separations[0] = -out.depth;
+    }
+    out.points[0] = (ca + cb) * 0.5 + out.normal * ((ra - rb) * 0.5);
+  }
+  return out;
+}
+
+/// Circle against a box or a polygon h (b is the shape, for the exact decision): the centre's
+/// excess over each face line, then the closest point of the boundary when the centre is outside.
+template <Scalar T, class B>
+std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, const Hull& h, Calc speculative) {
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius();
+  const Calc band = band_of(std::max({c.cwiseAbs().maxCoeff(), r, h.scale}));
+  // The face of largest excess; any face beyond r (plus speculative) by more than the band separates.
+  Calc excess = -std::numeric_limits<Calc>::infinity();
+  unsigned face = 0;
+  const Calc beyond = r + std::max(speculative, Calc(0)) + band;
+  for (std::size_t i = 0; i < h.core.size(); ++i) {
+    const Calc e = (c - h.core[i]).dot(h.normal(i));
+    if (e > beyond) return std::nullopt;
+    if (e > excess) {
+      excess = e;
+      face = unsigned(i);
+    }
+  }
+  const Core pc = core_of(a);
+  if (!(excess > 0)) {
+    // The centre inside: certain when inside by more than the band.
+    if (excess < -band || decide_exactly(a, b)) {
+      return contact_from_axis(pc, h.core, Axis{Vec2c(-h.normal(face)), r - excess, 1, face}, speculative);
+    }
+    return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
+  }
+  // The closest point of the boundary lies on the face of largest excess or a neighbour: every
+  // excess is at most the distance, and the closest feature's faces attain it.
+  Closest cl;
+  closest_of_points_to_edges(cl, pc.pts(), h.core.pts(), false, face + h.core.size() - 1, 3);
+  const Calc gap = norm_of(cl.on_q - cl.on_p) - r;
+  const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+  if (!overlapping) return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
+  if (const std::optional<CoreContact> k = contact_from_closest(pc, h.core, cl)) return k;
+  return contact_from_axis(pc, h.core, least_penetration(pc, h.core), speculative);
+}
+
+/// A box as a centre c, a stored axis w (|w| = 1 up to T's rounding) and half extents along w and
+/// perp(w): the point set c + s w + t perp(w), |s| <= hx, |t| <= hy.
+struct Rect {
+  Vec2c c, w;
+  Calc hx, hy;
+};
+/// Builds k from a box with interior whose corners keep their order when computed (see hull_of).
+template <Scalar T>
+bool rect_of(const Aabb<T>& s, Rect& k) {
+  const Vec2c lo = widen(s.min()), hi = widen(s.max());
+  k = {(lo + hi) * 0.5, Vec2c(1, 0), (hi.x() - lo.x()) * 0.5, (hi.y() - lo.y()) * 0.5};
+  return lo.x() < hi.x() && lo.y() < hi.y();
+}
+template <Scalar T>
+bool rect_of(const Obb<T>& s, Rect& k) {
+  k = {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
+  const Calc hmin = std::min(k.hx, k.hy), hmax = std::max(k.hx, k.hy);
+  return hmin > 0x1p-40 * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000;
+}
+
+/// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
+/// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
+/// (feature.hpp numbering); a centre inside takes the face it is least deep behind.
+template <Scalar T, class B>
+std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k, Calc speculative) {
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius();
+  const Vec2c v = perp(k.w);
+  const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
+  const Vec2c d = c - k.c;
+  const Calc s = d.dot(k.w) / ww, t = d.dot(v) / ww;  // the centre's box coordinates
+  const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
+  const Calc scale = std::max({c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * len});
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Calc band = band_of(scale);
+  if (std::max(ex, ey) * len - r > std::max(speculative, Calc(0)) + band) return std::nullopt;
+  CoreContact out;
+  out.count = 1;
+  if (ex > 0 || ey > 0) {
+    const Calc cs = std::clamp(s, -k.hx, k.hx), ct = std::clamp(t, -k.hy, k.hy);
+    const Vec2c q = k.c + k.w * cs + v * ct;
+    const Vec2c dq = q - c;
+    const Calc dist = norm_of(dq), gap = dist - r;
+    const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
+    if (dist > band) {
+      // Feature: a corner when both coordinates were clamped, else the side beyond which c lies.
+      const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
+      const unsigned side = ex > 0 ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
+      out.ids[0] = id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
+      out.normal = unit_of(dq);
+      out.overlapping = overlapping;
+      out.separations[0] = overlapping ? gap : std::max(gap, Calc(0));
+      out.depth = std::max(Calc(0), -out.separations[0]);
+      out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
+      return out;
+    }
+  } else if (!(std::max(ex, ey) * len < -band) && !decide_exactly(a, b)) {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  }
+  // The face the centre is least deep behind (or, within rounding of the boundary, beyond).
+  const bool along_w = ex >= ey;
+  const unsigned face = along_w ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
+  const Vec2c n_face = (along_w ? Vec2c(k.w * (s > 0 ? 1 : -1)) : Vec2c(v * (t > 0 ? 1 : -1))) / len;
+  const Calc e = std::max(ex, ey) * len;  // the centre's excess over that face (<= 0 inside)
+  out.normal = -n_face;
+  out.separations[0] = e - r;
+  out.depth = std::max(Calc(0), r - e);
+  out.points[0] = c + n_face * ((-e - r) * 0.5);
+  out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+  return out;
+}
+
+/// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
+/// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
+/// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
+/// certain above the band plus 2 ties.
+template <class A, class B>
+std::optional<CoreContact> contact_hulls(const A& a, const Hull& ha, const B& b, const Hull& hb, Calc speculative) {
+  const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * scale;
+  const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
+  const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
+  if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative);
+  return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
+}
+
+template <class S>
+inline constexpr bool is_hull_kind_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
+                                       std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
+
+/// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
+/// they overlap, or, with speculative > 0, when they are apart by at most speculative (rounded).
+template <class A, class B>
+std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
+  constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
+  if constexpr ((circle_a || is_hull_kind_v<A>) && is_hull_kind_v<B>) {
+    if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
+      // Boxes flat on an axis or thinner than their rounding take the generic path.
+      Rect k;
+      if (rect_of(b, k)) return contact_circle_rect(a, b, k, speculative);
+    } else if constexpr (circle_a) {
+      Hull hb;
+      const Calc s = std::max({widen(a.center()).cwiseAbs().maxCoeff(), Calc(a.radius())});
+      if (hull_of(b, hb) && std::max(s, hb.scale) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
+    } else {
+      Hull ha, hb;
+      if (hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore)
+        return contact_hulls(a, ha, b, hb, speculative);
+    }
+  }
+  return contact_generic(a, b, speculative);
+}
+
+}  // namespace collide::detail
