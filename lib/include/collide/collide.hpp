@@ -14,3 +14,5 @@
 #include "collide/registry.hpp"
 #include "collide/shapes.hpp"
 #include "collide/transform.hpp"
+#include "collide/cast.hpp"
+#include "collide/time_of_impact.hpp"
