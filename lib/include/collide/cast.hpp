@@ -70,13 +70,14 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     const Closest cl = closest_points(pm, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
     if (gap <= 2 * target) return hit_between(pm, q, cl, s, step);
-    // Separation along the closest-point axis: never more than the gap, and it falls no faster
-    // than the closing speed, so stepping to where it reaches target leaves the cores apart.
-    const Vec2c n = unit_of(cl.on_q - cl.on_p);
-    const Calc separation = -support(q, -n) - support(pm, n) - r;
+    // Separation along the best axis: never more than the gap, and it falls no faster than the
+    // closing speed, so stepping to where it reaches target leaves the cores apart. When rounding
+    // has left no axis separating by more than target, the gap itself falls no faster than |w|.
+    const Vec2c n = best_axis(pm, q, cl);
+    const Calc separation = separation_along(pm, q, n);
     const Calc closing = std::max(n.dot(w), Calc(0)) + closing_error;
-    if (!(closing > 0)) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step};
-    const Calc ds = (separation - target) / closing;
+    Calc ds = separation > target ? (separation - target) / closing : Calc(0);  // +inf when w = 0
+    if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + 0x1p-50));
     if (!(ds > 0)) return hit_between(pm, q, cl, s, step);
     if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;
@@ -86,10 +87,14 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
   return CoreCast{CastOutcome::IterationLimit, s, Vec2c::Zero(), Vec2c::Zero(), kCastMaxIterations};
 }
 
-/// One pair of primitives known apart at s = 0, advanced in the fixed order of core_before().
-inline CoreCast cast_cores(const Core& p, const Core& q, const Vec2c& w, Calc s_max, Calc target) {
-  if (core_before(q, p)) return reversed(advance_linear(q, p, -w, s_max, target));
-  return advance_linear(p, q, w, s_max, target);
+/// One pair of primitives known apart at s = 0, advanced in the fixed order of core_before()
+/// (the one moving at the relative velocity, the other still), with the point taken back to the
+/// world frame of time s by the velocity of the one held still.
+inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const Vec2c& vq, Calc s_max, Calc target) {
+  const bool swap = core_before(q, p);
+  CoreCast c = swap ? reversed(advance_linear(q, p, vq - vp, s_max, target)) : advance_linear(p, q, vp - vq, s_max, target);
+  if (c.outcome == CastOutcome::Hit) c.point += (swap ? vp : vq) * c.s;
+  return c;
 }
 
 /// The motion's scale M: the largest coordinate the moving shapes reach (relative motion).
@@ -150,7 +155,7 @@ CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va
     out.normal = c->normal;
     return out;
   }
-  const Vec2c w = widen(va) - widen(vb);
+  const Vec2c wa = widen(va), wb = widen(vb), w = wa - wb;
   const Calc s_max = static_cast<Calc>(max_t);
   const Calc target = detail::advance_target(detail::cast_scale(a, b, w, s_max));
   detail::CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
@@ -160,7 +165,7 @@ CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va
         detail::for_each_primitive(cb, [&](const auto& pb) {
           // A later pair only has to be followed up to the earliest answer so far.
           const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
-          best = detail::earlier(best, detail::cast_cores(detail::core_of(pa), detail::core_of(pb), w, until, target));
+          best = detail::earlier(best, detail::cast_cores(detail::core_of(pa), wa, detail::core_of(pb), wb, until, target));
         });
       });
     });
