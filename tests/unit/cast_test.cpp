@@ -221,3 +221,46 @@ TYPED_TEST(Cast, TimeOfImpactWithoutRotationAgreesWithTheCast) {
 
 }  // namespace
 }  // namespace collide::test
+
+namespace collide::test {
+namespace {
+
+// Regressions found by the cast property suite.
+
+/// Distance from p to s moved by v * t (in double).
+template <class S>
+double distance_at(const Vec2<double>& p, const S& s, const Vec2<double>& v, double t) {
+  return distance(Circle<double>(p, 0), translated(s, Vec2<double>(v * t)).value());
+}
+
+TEST(CastRegression, StepAxisFromClosestPointsLosesSeparationAlongASliver) {
+  using V = Vec2<double>;
+  // At a gap of 5e-7, 1e6 from the origin, the closest points' direction is off by 2e-4 rad and
+  // the sliver (128 long) showed a negative separation along it: the cast stopped 16 tolerances
+  // short. The face normal of the sliver's edge separates by the gap.
+  const Circle<double> a(V(999856.125, -1000013), 0);
+  const ConvexPolygon<double> b{V(999728, -1000016), V(999792, -1000015), V(999856, -1000013)};
+  const V va(-64.125, -1.6666666666278616);
+  const CastResult<double> r = shape_cast(a, va, b, V(0, 0), 0.25);
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  const double eps = cast_tolerance(a, va, b, V(0, 0), 0.25);
+  EXPECT_LE(distance(translated(a, V(va * r.t)).value(), b), eps);
+  EXPECT_FALSE(overlaps(translated(a, V(va * r.t)).value(), b));
+}
+
+TEST(CastRegression, HitPointAlongTheClosestPointsNotTheFaceNormal) {
+  using V = Vec2<double>;
+  // A circle of radius 6 reaching the end of a vertical segment: the face normal (1, 0) separates
+  // as well as the gap, but the circle's surface point lies along the closest points' direction.
+  const Circle<double> a(V(-67108858.0234375, -54525964.5), 6);
+  const Aabb<double> b(V(-67108852, -54525963), V(-67108852, -54525962));
+  const V va(0.18750000000000044, 12.000000000000028), vb(0, 0);
+  const CastResult<double> r = shape_cast(a, va, b, vb, 0.25);
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  const double eps = cast_tolerance(a, va, b, vb, 0.25);
+  EXPECT_LE(distance_at(r.point, a, va, r.t), 2 * eps);
+  EXPECT_LE(distance_at(r.point, b, vb, r.t), 2 * eps);
+}
+
+}  // namespace
+}  // namespace collide::test

@@ -82,7 +82,11 @@ inline CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Cal
   out.s = s;
   out.iterations = iterations;
   out.normal = best_axis(p, q, cl);
-  out.point = ((cl.on_p + out.normal * p.radius) + (cl.on_q - out.normal * q.radius)) * 0.5;
+  // The surface points lie along the closest points' own direction (accurate whenever the radii
+  // are not small next to the rounding; with small radii it hardly matters).
+  Vec2c d = unit_of(cl.on_q - cl.on_p);
+  if (d == Vec2c::Zero()) d = out.normal;
+  out.point = ((cl.on_p + d * p.radius) + (cl.on_q - d * q.radius)) * 0.5;
   return out;
 }
 
