@@ -158,18 +158,10 @@ CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va
   const Vec2c wa = widen(va), wb = widen(vb), w = wa - wb;
   const Calc s_max = static_cast<Calc>(max_t);
   const Calc target = detail::advance_target(detail::cast_scale(a, b, w, s_max));
-  detail::CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
-  detail::visit_shape(a, [&](const auto& ca) {
-    detail::visit_shape(b, [&](const auto& cb) {
-      detail::for_each_primitive(ca, [&](const auto& pa) {
-        detail::for_each_primitive(cb, [&](const auto& pb) {
-          // A later pair only has to be followed up to the earliest answer so far.
-          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
-          best = detail::earlier(best, detail::cast_cores(detail::core_of(pa), wa, detail::core_of(pb), wb, until, target));
-        });
+  const detail::CoreCast best =
+      detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
+        return detail::cast_cores(p, wa, q, wb, until, target);
       });
-    });
-  });
   return detail::to_result<T>(best, s_max);
 }
 

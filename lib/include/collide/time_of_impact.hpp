@@ -210,20 +210,11 @@ CastResult<scalar_of_t<A>> time_of_impact(const A& a, const Sweep<scalar_of_t<A>
     return detail::invalid_cast<T>();
   }
   const Calc target = detail::advance_target(detail::toi_scale(a, sweep_a, b, sweep_b));
-  detail::CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
-  detail::visit_shape(a, [&](const auto& ca) {
-    detail::visit_shape(b, [&](const auto& cb) {
-      detail::for_each_primitive(ca, [&](const auto& pa) {
-        detail::for_each_primitive(cb, [&](const auto& pb) {
-          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
-          const detail::Core p = detail::core_of(pa), q = detail::core_of(pb);
-          best = detail::earlier(best, detail::core_before(q, p)
-                                           ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target))
-                                           : detail::advance_swept(p, sweep_a, q, sweep_b, until, target));
-        });
+  const detail::CoreCast best =
+      detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
+        return detail::core_before(q, p) ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target))
+                                         : detail::advance_swept(p, sweep_a, q, sweep_b, until, target);
       });
-    });
-  });
   return detail::to_result<T>(best, s_max);
 }
 

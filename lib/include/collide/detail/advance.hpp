@@ -7,6 +7,7 @@
 #include "collide/config.hpp"
 #include "collide/detail/contact_cores.hpp"
 #include "collide/detail/core.hpp"
+#include "collide/shape_traits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -116,6 +117,25 @@ inline CoreCast earlier(const CoreCast& a, const CoreCast& b) noexcept {
   CoreCast out = (a_open && (!b_open || a.s <= b.s)) ? a : b;
   out.iterations = iterations;
   return out;
+}
+
+/// Calls f(pa, pb) for every pair of primitives of a and b (a compound's children), with the
+/// earliest answer so far: f returns the new earliest (see earlier()).
+template <class A, class B, class F>
+CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
+  CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
+  visit_shape(a, [&](const auto& ca) {
+    visit_shape(b, [&](const auto& cb) {
+      for_each_primitive(ca, [&](const auto& pa) {
+        for_each_primitive(cb, [&](const auto& pb) {
+          // A later pair only has to be followed up to the earliest answer so far.
+          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
+          best = earlier(best, f(core_of(pa), core_of(pb), until));
+        });
+      });
+    });
+  });
+  return best;
 }
 
 /// A strict order on cores (point count, then coordinates, then radius), so that a pair is always
