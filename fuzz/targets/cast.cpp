@@ -12,6 +12,7 @@
 #include "collide/laws/laws.hpp"
 #include "collide/oracle/oracle.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -79,7 +80,9 @@ bool valid_motion(const laws::CastInput<T>& in) {
   for (const double v : {double(in.va.x()), double(in.va.y()), double(in.vb.x()), double(in.vb.y())}) {
     if (!std::isfinite(v) || std::fabs(v) > lim) return false;
   }
-  return (widen(in.va) - widen(in.vb)).cwiseAbs().maxCoeff() * mt <= 2 * lim;
+  const double travel = std::max({(widen(in.va) - widen(in.vb)).cwiseAbs().maxCoeff(), widen(in.va).cwiseAbs().maxCoeff(),
+                                  widen(in.vb).cwiseAbs().maxCoeff()});
+  return travel * mt <= 2 * lim;
 }
 
 template <Scalar T>

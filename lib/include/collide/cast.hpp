@@ -25,7 +25,8 @@
 ///   same t and the reversed normal, bit for bit.
 /// - Defined answers everywhere: zero relative velocity, motion parallel to a face (a box sliding
 ///   along flat ground), shapes starting in contact. NaN or infinite input, max_t < 0, a velocity
-///   beyond max_magnitude<T>() or a travel |w| max_t beyond 2 max_magnitude<T>() give
+///   beyond max_magnitude<T>() or a travel (|w|, |va| or |vb| times max_t) beyond
+///   2 max_magnitude<T>() give
 ///   CastOutcome::InvalidInput. At most kCastMaxIterations steps per pair of primitives; beyond
 ///   that the answer is IterationLimit with the last time proven free of contact.
 /// No allocation for shapes of at most 8 vertices.
@@ -116,8 +117,10 @@ bool cast_input_valid(const Vec2<T>& va, const Vec2<T>& vb, T max_t) noexcept {
       if (!std::isfinite(x) || std::fabs(x) > lim) return false;
     }
   }
+  // Each shape's own travel too: the hit's point is reported in the world at time t.
   const Vec2c w = widen(va) - widen(vb);
-  return w.cwiseAbs().maxCoeff() * m <= 2 * lim;
+  const Calc travel = std::max({w.cwiseAbs().maxCoeff(), widen(va).cwiseAbs().maxCoeff(), widen(vb).cwiseAbs().maxCoeff()});
+  return travel * m <= 2 * lim;
 }
 
 }  // namespace detail
