@@ -5,4 +5,5 @@
 namespace bench {
 bool register_narrowphase();
 bool register_broadphase();
+bool register_cast();  // bench/cast.cpp, built when the exact oracle is available
 }  // namespace bench

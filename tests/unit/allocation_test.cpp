@@ -228,5 +228,28 @@ TEST(Allocation, CounterSeesAnAllocation) {
             }));
 }
 
+// Shape casts and time of impact (cast.hpp, time_of_impact.hpp): no allocation for any pair.
+template <ShapeKind KA, ShapeKind KB, Scalar T>
+void check_pair_casts() {
+  using V = Vec2<T>;
+  const auto a = make_kind<KA, T>(V(-3, 0), T(1));
+  const auto b = make_kind<KB, T>(V(3, 0), T(1));
+  const auto local = make_kind<KA, T>(V(0, 0), T(1));  // a compound allocates when built
+  Sweep<T> turn;
+  turn.c0 = V(-3, 0);
+  turn.c1 = V(1, 0);
+  turn.a1 = T(1.5);
+  const long n = allocations_in([&] {
+    keep(shape_cast(a, V(4, 0), b, V(-1, 0), T(1)));
+    keep(shape_cast(b, V(0, 1), a, V(0, 0), T(1)));
+    keep(time_of_impact(local, turn, b, Sweep<T>{}, T(1)));
+  });
+  EXPECT_EQ(n, 0) << pair_label<KA, KB>() << ": shape_cast / time_of_impact allocated";
+}
+
+TYPED_TEST(Allocation, NoCastOrTimeOfImpactAllocatesForAnyPair) {
+  for_each_pair([]<ShapeKind A, ShapeKind B>() { check_pair_casts<A, B, TypeParam>(); });
+}
+
 }  // namespace
 }  // namespace collide::test

@@ -8,11 +8,8 @@
 #include "collide/contains.hpp"
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
-<<<<<<< HEAD
 #include "collide/image.hpp"
-=======
 #include "collide/feature.hpp"
->>>>>>> m
 #include "collide/predicates.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"
@@ -20,3 +17,5 @@
 #include "collide/shapes.hpp"
 #include "collide/transform.hpp"
 #include "collide/transformed.hpp"
+#include "collide/cast.hpp"
+#include "collide/time_of_impact.hpp"

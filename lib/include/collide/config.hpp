@@ -84,4 +84,15 @@ inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 /// are exact and have no tolerance.
 inline constexpr Calc kOverlapErrorFactor = 64.0;
 
+/// Shape casts and time of impact (cast.hpp, time_of_impact.hpp): conservative advancement stops
+/// when the computed gap is within twice its target separation, target = this factor * 2^-53 * M
+/// + kAbsoluteFloor, M being the motion's scale (the largest coordinate the moving shapes reach).
+/// The factor leaves a wide margin over the rounding of the moved cores (a few units of 2^-53 M),
+/// so every step stays provably short of contact.
+inline constexpr Calc kCastTargetFactor = 256.0;
+
+/// Shape casts and time of impact: advancement steps per pair of primitives before giving up; the
+/// result is then CastOutcome::IterationLimit with the last time proven free of contact.
+inline constexpr int kCastMaxIterations = 64;
+
 }  // namespace collide

@@ -178,3 +178,37 @@ double approx_signed_distance(const A& a, const B& b) {
 }
 
 }  // namespace collide::oracle
+
+// ---------------------------------------------------------------------------------------------
+// Moving shapes (cast_oracle.cpp): shape casts and time of impact judged exactly.
+
+namespace collide::oracle {
+
+namespace exact {
+bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<double>& b, const Vec2<double>& vb,
+                  double t0, double t1, double pad);
+bool meets_posed(const Shape<double>& a, const Vec2<double>& qa, const Vec2<double>& pa, const Shape<double>& b,
+                 const Vec2<double>& qb, const Vec2<double>& pb, double pad);
+}  // namespace exact
+
+/// Exact: at some time s in [t0, t1] (either order), the shapes a + va s and b + vb s (exact
+/// rational positions) are at most pad apart (pad = 0: they overlap, touching included; a negative
+/// pad counts as 0). For two primitives the set of such s is an interval, so this is one static
+/// test of a's core swept by (va - vb) over [t0, t1] against b; compounds: some pair of children.
+/// Hence, with t* the exact first contact time: t* <= t  <=>  meets_during(a, va, b, vb, 0, t).
+template <AnyShape A, AnyShape B, Scalar T>
+bool meets_during(const A& a, const Vec2<T>& va, const B& b, const Vec2<T>& vb, double t0, double t1, double pad = 0) {
+  return exact::meets_during(as_exact_input(a), va.template cast<double>(), as_exact_input(b),
+                             vb.template cast<double>(), t0, t1, pad);
+}
+
+/// Exact: the shape a placed at pose (qa, pa) and b at (qb, pb) are at most pad apart. A pose maps
+/// a local point x to R(q) x + p, R(q) = [[q.x, -q.y], [q.y, q.x]], evaluated exactly (q need not be
+/// a unit vector: the map is the one the doubles define); radii are kept.
+template <AnyShape A, AnyShape B>
+bool meets_posed(const A& a, const Vec2<double>& qa, const Vec2<double>& pa, const B& b, const Vec2<double>& qb,
+                 const Vec2<double>& pb, double pad = 0) {
+  return exact::meets_posed(as_exact_input(a), qa, pa, as_exact_input(b), qb, pb, pad);
+}
+
+}  // namespace collide::oracle

@@ -306,3 +306,57 @@ template <Scalar T>
 Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b);
 
 }  // namespace collide::laws
+
+// ---------------------------------------------------------------------------------------------
+// Moving shapes: shape_cast() (cast.hpp) and time_of_impact() (time_of_impact.hpp), judged by the
+// oracle's exact answers for moving shapes (oracle::meets_during, oracle::meets_posed).
+
+namespace collide::laws {
+
+/// The motion of a linear cast: a moves at va, b at vb, over [0, max_t].
+template <Scalar T>
+struct CastInput {
+  Vec2<T> va;  ///< velocity of a
+  Vec2<T> vb;  ///< velocity of b
+  T max_t;     ///< end of the interval
+};
+
+/// Cast law. shape_cast(a, va, b, vb, max_t), judged by cast.hpp's contract with
+/// eps = cast_tolerance(): a valid answer with 0 <= t <= max_t; shapes overlapping at the start
+/// (oracle) hit at t = 0 with contact(a, b)'s normal and first point; a hit with t > 0 leaves
+/// the exact shapes apart over [0, t] (no tunnelling) and within eps at t (accuracy), with a unit
+/// normal from a toward b (point + L normal is at least L - slack from a, point - L normal from
+/// b) and a point within eps of both; a miss has no exact contact in [0, max_t]; an iteration
+/// limit none in [0, t]. Relation: Overlapping or Separated at the start.
+template <Scalar T>
+Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
+
+/// Cast symmetry and relative motion: swapping a and b gives the same outcome and t bit for bit
+/// and the reversed normal (bit for bit, except at t = 0 from an overlap, where the normal is
+/// contact()'s, judged by the contact law); cast(a, va - vb, b, 0) gives the same outcome, t and
+/// normal whenever va - vb is exact in T, and its point moved by vb t (within T's rounding).
+template <Scalar T>
+Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
+
+/// Cast translation invariance: both shapes moved by d (translated()) obey the cast law; when
+/// both moves are exact, a hit before the move and a miss after it (or the reverse) are allowed
+/// only for a motion that passes within the larger tolerance without touching (a disagreement).
+template <Scalar T>
+Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in, const Vec2<T>& d);
+
+/// A zero-radius circle cast from the ray's origin along its direction against a still s agrees
+/// with raycast(s, ray, max_t) on hit or miss, except for a ray passing within the larger of the
+/// two tolerances (a disagreement); both start inside: both at t = 0.
+template <Scalar T>
+Verdict cast_raycast(const Shape<T>& s, const RayInput<T>& ray, T max_t);
+
+/// Time-of-impact law. time_of_impact(a, sa, b, sb, max_t), judged by time_of_impact.hpp's
+/// contract with eps = toi_tolerance(): a valid answer with 0 <= t <= max_t; at each sample time
+/// f * t (f in samples, within [0, 1]; f * max_t after a miss) the shapes placed exactly at
+/// sweep_pose() are apart (oracle::meets_posed); at a hit's t they are within eps; a unit normal;
+/// the swapped query gives the same t and the reversed normal.
+template <Scalar T>
+Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const Sweep<T>& sb, T max_t,
+                std::span<const double> samples);
+
+}  // namespace collide::laws

@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""Seeds of the fuzz target `cast` (fuzz/corpus/cast/), built from the seeds of contact_raycast.
+
+A contact_raycast input is a pair followed by a ray (origin x y, direction x y, max_t); read by
+`cast`, the same five scalars are va, vb and max_t: every ray seed is a motion seed. Each chosen
+seed is written three ways: as it is, with the grazing bit (flags bit 2: a moved back along the
+tangent of its contact so that the pair passes within touching at max_t / 2), and with the two
+turns of time_of_impact appended (a quarter turn of a, half a turn back of b).
+
+usage: fuzz/make_cast_corpus.py [--count N]   (writes fuzz/corpus/cast/c-*.bin)
+"""
+
+import argparse
+import hashlib
+import pathlib
+import struct
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--count", type=int, default=40)
+    args = ap.parse_args()
+    src = sorted((ROOT / "fuzz/corpus/contact_raycast").iterdir())
+    out = ROOT / "fuzz/corpus/cast"
+    out.mkdir(parents=True, exist_ok=True)
+    written = 0
+    for path in src[: args.count]:
+        data = path.read_bytes()
+        if not data:
+            continue
+        fmt = "<d" if data[0] & 1 else "<f"
+        turns = struct.pack(fmt, 1.5707963267948966) + struct.pack(fmt, -3.141592653589793)
+        for variant in (data, bytes([data[0] | 4]) + data[1:], data + turns):
+            name = "c-" + hashlib.sha1(variant).hexdigest()[:16] + ".bin"
+            (out / name).write_bytes(variant)
+            written += 1
+    print(f"make_cast_corpus: {written} seeds in {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

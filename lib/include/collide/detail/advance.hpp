@@ -1,0 +1,184 @@
+#pragma once
+/// @file detail/advance.hpp
+/// Pieces shared by shape casts (cast.hpp) and time of impact (time_of_impact.hpp): the result
+/// types, the answer of one pair of cores, how pairs of children combine, and how a time is
+/// rounded to the stored scalar without moving it later.
+
+#include "collide/config.hpp"
+#include "collide/detail/contact_cores.hpp"
+#include "collide/detail/core.hpp"
+#include "collide/shape_traits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace collide {
+
+/// How a cast or a time-of-impact query ended.
+enum class CastOutcome : std::uint8_t {
+  Hit,             ///< the shapes meet (within the query's tolerance) at t
+  Miss,            ///< they stay apart over the whole interval; t = max_t
+  IterationLimit,  ///< undecided after kCastMaxIterations steps: apart on [0, t], nothing known after
+  InvalidInput,    ///< a NaN or infinite value, max_t < 0, or a motion beyond the representable range
+};
+
+/// The answer of shape_cast() or time_of_impact().
+template <Scalar T>
+struct CastResult {
+  CastOutcome outcome = CastOutcome::Miss;  ///< see CastOutcome
+  T t = 0;                                  ///< time of the hit; max_t on a miss; the last safe time at the limit
+  Vec2<T> point = Vec2<T>::Zero();          ///< on a hit: midway between the two surfaces at t
+  Vec2<T> normal = Vec2<T>::Zero();         ///< on a hit: unit, from a toward b at t
+  int iterations = 0;                       ///< advancement steps taken (the largest over child pairs)
+  /// True for CastOutcome::Hit.
+  bool hit() const noexcept { return outcome == CastOutcome::Hit; }
+};
+
+namespace detail {
+
+/// The answer for one pair of primitives, in the computation's precision.
+struct CoreCast {
+  CastOutcome outcome = CastOutcome::Miss;
+  Calc s = 0;                       ///< time (hit or last safe time)
+  Vec2c normal = Vec2c::Zero();     ///< from the first core toward the second
+  Vec2c point = Vec2c::Zero();      ///< midway between the surfaces
+  int iterations = 0;
+};
+
+/// The target separation of an advancement whose moving shapes reach coordinates up to m.
+inline Calc advance_target(Calc m) noexcept { return kCastTargetFactor * kUnitRoundoff * m + kAbsoluteFloor; }
+
+/// Separation of the dilated cores along unit n (from p toward q): at most their gap.
+inline Calc separation_along(const Core& p, const Core& q, const Vec2c& n) noexcept {
+  return -support(q, -n) - support(p, n) - p.radius - q.radius;
+}
+
+/// The direction that separates the cores best among the closest-point direction and every face
+/// normal (from p toward q). At a small gap the closest points are only a few roundings apart and
+/// their direction is off by up to about rounding / gap; a face normal is exact to rounding, and
+/// for a face nearest a vertex it separates as well as the gap itself. (Along a direction off by
+/// 2e-4 rad, a sliver 128 long can show a negative separation at a gap of 5e-7.)
+inline Vec2c best_axis(const Core& p, const Core& q, const Closest& cl) {
+  Vec2c best = unit_of(cl.on_q - cl.on_p);
+  if (best == Vec2c::Zero()) best = Vec2c(1, 0);
+  Calc best_sep = separation_along(p, q, best);
+  for_each_face(p, [&](const Vec2c& n, unsigned) {
+    const Calc sep = separation_along(p, q, n);
+    if (sep > best_sep) best_sep = sep, best = n;
+  });
+  for_each_face(q, [&](const Vec2c& n, unsigned) {
+    const Calc sep = separation_along(p, q, -n);
+    if (sep > best_sep) best_sep = sep, best = -n;
+  });
+  return best;
+}
+
+/// Hit at time s for cores p, q (already moved there) that are apart: the normal of
+/// best_axis(), the point midway between the closest points of the two surfaces.
+inline CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Calc s, int iterations) {
+  CoreCast out;
+  out.outcome = CastOutcome::Hit;
+  out.s = s;
+  out.iterations = iterations;
+  out.normal = best_axis(p, q, cl);
+  // The surface points lie along the closest points' own direction (accurate whenever the radii
+  // are not small next to the rounding; with small radii it hardly matters).
+  Vec2c d = unit_of(cl.on_q - cl.on_p);
+  if (d == Vec2c::Zero()) d = out.normal;
+  out.point = ((cl.on_p + d * p.radius) + (cl.on_q - d * q.radius)) * 0.5;
+  return out;
+}
+
+/// Hit at s for cores that overlap there: the normal and first point of their contact.
+inline CoreCast hit_overlapping(const Core& p, const Core& q, Calc s, int iterations) {
+  const CoreContact c = contact_cores(p, q);
+  CoreCast out;
+  out.outcome = CastOutcome::Hit;
+  out.s = s;
+  out.iterations = iterations;
+  out.normal = c.normal;
+  out.point = c.points[0];
+  return out;
+}
+
+/// The answer with its normal reversed (the same pair asked in the other order).
+inline CoreCast reversed(CoreCast c) noexcept {
+  c.normal = -c.normal;
+  return c;
+}
+
+/// Combines the answers of two pairs of children: the earlier of hits and limits wins (a limit
+/// earlier than every hit makes the whole answer a limit there); two misses stay a miss.
+inline CoreCast earlier(const CoreCast& a, const CoreCast& b) noexcept {
+  const int iterations = std::max(a.iterations, b.iterations);
+  const bool a_open = a.outcome != CastOutcome::Miss, b_open = b.outcome != CastOutcome::Miss;
+  CoreCast out = (a_open && (!b_open || a.s <= b.s)) ? a : b;
+  out.iterations = iterations;
+  return out;
+}
+
+/// Calls f(pa, pb) for every pair of primitives of a and b (a compound's children), with the
+/// earliest answer so far: f returns the new earliest (see earlier()).
+template <class A, class B, class F>
+CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
+  CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
+  visit_shape(a, [&](const auto& ca) {
+    visit_shape(b, [&](const auto& cb) {
+      for_each_primitive(ca, [&](const auto& pa) {
+        for_each_primitive(cb, [&](const auto& pb) {
+          // A later pair only has to be followed up to the earliest answer so far.
+          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
+          best = earlier(best, f(core_of(pa), core_of(pb), until));
+        });
+      });
+    });
+  });
+  return best;
+}
+
+/// A strict order on cores (point count, then coordinates, then radius), so that a pair is always
+/// advanced in one order whichever order it was asked in: the two orders give the same bits.
+inline bool core_before(const Core& p, const Core& q) noexcept {
+  if (p.size() != q.size()) return p.size() < q.size();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      if (p[i][k] != q[i][k]) return p[i][k] < q[i][k];
+    }
+  }
+  return p.radius < q.radius;
+}
+
+/// s in T, rounded toward zero: a time proven safe stays safe.
+template <Scalar T>
+T time_toward_zero(Calc s) noexcept {
+  T t = static_cast<T>(s);
+  if (static_cast<Calc>(t) > s) t = std::nextafter(t, T(0));
+  return t;
+}
+
+/// The answer rounded to T. A hit's point and normal are rounded to nearest; its time toward zero.
+template <Scalar T>
+CastResult<T> to_result(const CoreCast& c, Calc max_t) {
+  CastResult<T> out;
+  out.outcome = c.outcome;
+  out.iterations = c.iterations;
+  out.t = time_toward_zero<T>(c.outcome == CastOutcome::Miss ? max_t : c.s);
+  if (c.outcome == CastOutcome::Hit) {
+    out.point = c.point.template cast<T>();
+    out.normal = c.normal.template cast<T>();
+  }
+  return out;
+}
+
+/// The named error answer.
+template <Scalar T>
+CastResult<T> invalid_cast() noexcept {
+  CastResult<T> out;
+  out.outcome = CastOutcome::InvalidInput;
+  return out;
+}
+
+}  // namespace detail
+}  // namespace collide

@@ -1,0 +1,284 @@
+/// @file cast_laws.cpp
+/// The laws of shape_cast() and time_of_impact(), judged by the exact oracle for moving shapes
+/// (oracle::meets_during, oracle::meets_posed). See laws.hpp for each law's statement.
+
+#include "collide/cast.hpp"
+#include "collide/time_of_impact.hpp"
+#include "support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace collide::laws {
+
+namespace {
+
+using detail::describe;
+using detail::num;
+using detail::vec;
+
+std::string_view outcome_name(CastOutcome o) {
+  switch (o) {
+    case CastOutcome::Hit: return "hit";
+    case CastOutcome::Miss: return "miss";
+    case CastOutcome::IterationLimit: return "iteration limit";
+    case CastOutcome::InvalidInput: return "invalid input";
+  }
+  return "?";
+}
+
+template <Scalar T>
+std::string describe_result(const CastResult<T>& r) {
+  std::string out(outcome_name(r.outcome));
+  out += " t=" + num(double(r.t)) + " point=" + vec(r.point) + " normal=" + vec(r.normal) +
+         " iterations=" + std::to_string(r.iterations);
+  return out;
+}
+
+/// Fails the verdict (first failure kept).
+void fail(Verdict& v, const std::string& expected, const std::string& got) {
+  if (!v.ok) return;
+  v.ok = false;
+  v.expected = expected;
+  v.got = got;
+  v.account += "; FAILED: expected " + expected + ", got " + got;
+}
+
+/// Largest extent of a shape's bounding box.
+template <Scalar T>
+double size_of(const Shape<T>& s) {
+  const Aabb<T> b = bounds(s);
+  return (widen(b.max()) - widen(b.min())).maxCoeff();
+}
+
+/// A point shape (zero-radius circle) for distance questions, or nullopt beyond the range.
+std::optional<Shape<double>> point_shape(const Vec2<double>& p) {
+  auto c = Circle<double>::make(p, 0.0);
+  if (!c) return std::nullopt;
+  return Shape<double>(c.value());
+}
+
+/// The point q lies farther than d from s moving at v, at time t (exact); true when q cannot be
+/// represented (it then lies beyond every shape of the range).
+template <Scalar T>
+bool far_at(const Vec2<double>& q, const Shape<T>& s, const Vec2<T>& v, double t, double d) {
+  if (d <= 0) return true;
+  const auto p = point_shape(q);
+  if (!p) return true;
+  return !oracle::exact::meets_during(*p, Vec2<double>(0, 0), oracle::as_exact_input(s), v.template cast<double>(), t, t, d);
+}
+
+}  // namespace
+
+template <Scalar T>
+Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
+  Verdict v;
+  const CastResult<T> r = shape_cast(a, in.va, b, in.vb, in.max_t);
+  const double eps = cast_tolerance(a, in.va, b, in.vb, in.max_t);
+  const double t = double(r.t), max_t = double(in.max_t);
+  const bool start = oracle::overlaps(a, b);
+  v.relation = start ? Relation::Overlapping : Relation::Separated;
+  v.account = "shape_cast(" + describe(a) + ", va=" + vec(in.va) + ", " + describe(b) + ", vb=" + vec(in.vb) +
+              ", max_t=" + num(max_t) + ") = " + describe_result(r) + ", tolerance " + num(eps);
+  if (r.outcome == CastOutcome::InvalidInput) {
+    fail(v, "a valid answer for valid input", "invalid input");
+    return v;
+  }
+  if (!(t >= 0 && t <= max_t)) fail(v, "0 <= t <= max_t", num(t));
+  if (start && !(r.hit() && r.t == T(0))) fail(v, "a hit at t = 0 (the shapes overlap at the start)", describe_result(r));
+  if (!v.ok) return v;
+  switch (r.outcome) {
+    case CastOutcome::Miss:
+      if (oracle::meets_during(a, in.va, b, in.vb, 0.0, max_t)) fail(v, "no contact in [0, max_t] after a miss", "the exact shapes meet in [0, max_t]");
+      break;
+    case CastOutcome::IterationLimit:
+      if (oracle::meets_during(a, in.va, b, in.vb, 0.0, t)) fail(v, "apart on [0, t] at the iteration limit", "the exact shapes meet in [0, t]");
+      break;
+    case CastOutcome::Hit: {
+      if (start) {
+        const auto c = contact(a, b);
+        if (!c || c->normal != r.normal || c->points[0] != r.point) fail(v, "contact(a, b)'s normal and first point at t = 0", describe_result(r));
+        break;
+      }
+      // Never later than the first contact: apart over [0, t] (t > 0), and within eps at t.
+      if (t > 0 && oracle::meets_during(a, in.va, b, in.vb, 0.0, t)) fail(v, "apart on [0, t] (t no later than the first contact)", "the exact shapes meet in [0, t]: tunnelled");
+      if (!oracle::meets_during(a, in.va, b, in.vb, t, t, eps)) fail(v, "the exact shapes within the tolerance at t", "farther apart at t");
+      const double len = std::hypot(double(r.normal.x()), double(r.normal.y()));
+      if (!(std::fabs(len - 1) <= 8 * detail::eps<T>())) fail(v, "a unit normal", "|normal| = " + num(len));
+      // The normal points from a toward b: beyond the point along it lies only b's side, and
+      // back along it only a's.
+      const double L = std::max({size_of(a), size_of(b), 256 * eps});
+      const Vec2<double> p = widen(r.point), n = widen(r.normal);
+      // A normal found at a gap of a few roundings is good to about 1/100 rad: L / 32 of slack.
+      const double slack = 2 * eps + 16 * detail::eps<T>() * (L + p.cwiseAbs().maxCoeff()) + L / 32;
+      // A compound: for some pair of children (the pair that met).
+      bool sides = false;
+      for (const Primitive<T>& ca : detail::primitives_of(a)) {
+        for (const Primitive<T>& cb : detail::primitives_of(b)) {
+          sides = sides || (far_at(Vec2<double>(p + n * L), to_shape(ca), in.va, t, L - slack) &&
+                            far_at(Vec2<double>(p - n * L), to_shape(cb), in.vb, t, L - slack));
+        }
+      }
+      if (!sides) fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)", describe_result(r));
+      // The point lies between the two surfaces, within the gap (<= eps) of both.
+      const double reach = 2 * eps + 8 * detail::eps<T>() * (std::fabs(p.x()) + std::fabs(p.y()));
+      if (far_at(p, a, in.va, t, reach) || far_at(p, b, in.vb, t, reach)) {
+        fail(v, "the point within the tolerance of both shapes at t", describe_result(r));
+      }
+      break;
+    }
+    case CastOutcome::InvalidInput: break;
+  }
+  return v;
+}
+
+template <Scalar T>
+Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
+  Verdict v;
+  const CastResult<T> r = shape_cast(a, in.va, b, in.vb, in.max_t);
+  const CastResult<T> s = shape_cast(b, in.vb, a, in.va, in.max_t);
+  v.relation = oracle::overlaps(a, b) ? Relation::Overlapping : Relation::Separated;
+  v.account = "shape_cast(a, va, b, vb) = " + describe_result(r) + "; swapped: " + describe_result(s) + "; a=" +
+              describe(a) + " va=" + vec(in.va) + " b=" + describe(b) + " vb=" + vec(in.vb) + " max_t=" + num(double(in.max_t));
+  if (r.outcome != s.outcome || r.t != s.t) fail(v, "the swapped cast gives the same outcome and t", describe_result(s));
+  // At t = 0 from an overlap the normal is contact()'s, symmetric within its own tolerance
+  // (contact law); elsewhere it is computed in one order and negated: bit for bit.
+  const bool start = r.hit() && r.t == T(0) && overlaps(a, b);
+  if (r.hit() && !start && s.normal != Vec2<T>(-r.normal)) fail(v, "the swapped cast's normal reversed", describe_result(s));
+  // Relative motion: only va - vb matters (when T represents it exactly).
+  const Vec2<T> w = in.va - in.vb;
+  if (widen(w) == widen(in.va) - widen(in.vb)) {
+    const CastResult<T> q = shape_cast(a, w, b, Vec2<T>(0, 0), in.max_t);
+    // The point is in the world of time t: b's motion moves it by vb t (one rounding of T).
+    const double moved = (widen(q.point) + widen(in.vb) * double(r.t) - widen(r.point)).cwiseAbs().maxCoeff();
+    const double bound = 4 * detail::eps<T>() * (widen(r.point).cwiseAbs().maxCoeff() + widen(in.vb).cwiseAbs().maxCoeff() * double(r.t));
+    if (q.outcome != r.outcome || q.t != r.t || (!start && q.normal != r.normal) || (r.hit() && !(moved <= bound))) {
+      fail(v, "cast(a, va - vb, b, 0): the same outcome, t and normal, the point moved by vb t", describe_result(q));
+    }
+  }
+  return v;
+}
+
+template <Scalar T>
+Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in, const Vec2<T>& d) {
+  Verdict v;
+  const auto ma = translated(a, d), mb = translated(b, d);
+  v.relation = oracle::overlaps(a, b) ? Relation::Overlapping : Relation::Separated;
+  v.account = "translation by " + vec(d) + " of a=" + describe(a) + " b=" + describe(b) + " va=" + vec(in.va) +
+              " vb=" + vec(in.vb) + " max_t=" + num(double(in.max_t));
+  if (!ma || !mb) {
+    v.account += ": the move is not representable (named error), nothing to compare";
+    return v;
+  }
+  const Shape<T> a2 = ma.value(), b2 = mb.value();
+  const CastResult<T> r = shape_cast(a, in.va, b, in.vb, in.max_t);
+  const CastResult<T> s = shape_cast(a2, in.va, b2, in.vb, in.max_t);
+  v.account += "; before: " + describe_result(r) + "; after: " + describe_result(s);
+  // The moved pair is itself judged by the cast law.
+  const Verdict moved = cast_law(a2, b2, in);
+  if (!moved.ok) fail(v, "the moved pair obeys the cast law", moved.account);
+  if (!detail::exact_move(a, a2, d) || !detail::exact_move(b, b2, d)) return v;  // rounded moves: a new pair
+  // An exact move: the same motion. A hit and a miss agree only for a motion that passes within
+  // the larger tolerance without touching (the contract allows either there).
+  if (r.hit() != s.hit() && r.outcome != CastOutcome::IterationLimit && s.outcome != CastOutcome::IterationLimit) {
+    const double eps = std::max(cast_tolerance(a, in.va, b, in.vb, in.max_t), cast_tolerance(a2, in.va, b2, in.vb, in.max_t));
+    const bool grazes = oracle::meets_during(a, in.va, b, in.vb, 0.0, double(in.max_t), eps) &&
+                        !oracle::meets_during(a, in.va, b, in.vb, 0.0, double(in.max_t));
+    if (!grazes) fail(v, "the same outcome after an exact translation", describe_result(s));
+    v.disagreement = grazes;
+  }
+  if (r.hit() && s.hit() && (r.t == T(0)) != (s.t == T(0)) && oracle::overlaps(a, b)) {
+    fail(v, "t = 0 in both (the start overlaps)", describe_result(s));
+  }
+  return v;
+}
+
+template <Scalar T>
+Verdict cast_raycast(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
+  Verdict v;
+  const Circle<T> dot(ray.origin, T(0));
+  const Vec2<T> zero(0, 0);
+  const CastResult<T> c = shape_cast(dot, ray.direction, s, zero, max_t);
+  const auto h = raycast(s, Ray<T>{ray.origin, ray.direction}, max_t);
+  const double eps = cast_tolerance(dot, ray.direction, s, zero, max_t);
+  const double delta = raycast_tolerance(s, Ray<T>{ray.origin, ray.direction});
+  const Shape<T> p = dot;
+  v.relation = oracle::overlaps(p, s) ? Relation::Overlapping : Relation::Separated;
+  v.account = "zero-radius circle cast from " + vec(ray.origin) + " along " + vec(ray.direction) + " to " +
+              describe(s) + ", max_t=" + num(double(max_t)) + ": " + describe_result(c) + "; raycast: " +
+              (h ? "hit t=" + num(double(h->t)) : std::string("miss"));
+  if (c.outcome == CastOutcome::IterationLimit || c.outcome == CastOutcome::InvalidInput) return v;
+  if (c.hit() == bool(h)) {
+    // Both start inside: both at t = 0.
+    if (c.hit() && (c.t == T(0)) != (h->t == T(0)) && oracle::contains(s, ray.origin)) fail(v, "both at t = 0 from inside", "");
+    return v;
+  }
+  // They differ only for a ray passing within the larger tolerance of the shape.
+  const double pad = std::max(eps, delta);
+  const bool near = oracle::meets_during(p, ray.direction, s, zero, 0.0, double(max_t), pad);
+  if (!near) fail(v, "the cast and the ray agree on hit or miss", c.hit() ? "cast hit, ray missed" : "ray hit, cast missed");
+  v.disagreement = near;
+  return v;
+}
+
+template <Scalar T>
+Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const Sweep<T>& sb, T max_t,
+                std::span<const double> samples) {
+  Verdict v;
+  const CastResult<T> r = time_of_impact(a, sa, b, sb, max_t);
+  const double eps = toi_tolerance(a, sa, b, sb, max_t);
+  auto sweep_text = [](const Sweep<T>& s) {
+    return "{lc=" + vec(s.local_center) + " c0=" + vec(s.c0) + " c1=" + vec(s.c1) + " a0=" + num(double(s.a0)) +
+           " a1=" + num(double(s.a1)) + "}";
+  };
+  v.account = "time_of_impact(" + describe(a) + " " + sweep_text(sa) + ", " + describe(b) + " " + sweep_text(sb) +
+              ", max_t=" + num(double(max_t)) + ") = " + describe_result(r) + ", tolerance " + num(eps);
+  auto meets = [&](double s, double pad) {
+    const SweepPose pa = sweep_pose(sa, s), pb = sweep_pose(sb, s);
+    return oracle::meets_posed(a, pa.rotation, pa.position, b, pb.rotation, pb.position, pad);
+  };
+  v.relation = meets(0, 0) ? Relation::Overlapping : Relation::Separated;
+  if (r.outcome == CastOutcome::InvalidInput) {
+    fail(v, "a valid answer for valid input", "invalid input");
+    return v;
+  }
+  const double t = double(r.t);
+  if (!(t >= 0 && t <= double(max_t))) fail(v, "0 <= t <= max_t", num(t));
+  // Apart at the sample times before t (every sample up to max_t after a miss), and at t itself
+  // when t > 0.
+  const double until = r.outcome == CastOutcome::Miss ? double(max_t) : t;
+  for (const double f : samples) {
+    const double s = f * until;
+    if (s > until || (r.hit() && t == 0)) continue;
+    if (meets(s, 0)) {
+      fail(v, "the posed shapes apart at time " + num(s) + " <= " + num(until), "they meet there");
+      break;
+    }
+  }
+  if (r.hit()) {
+    if (!meets(t, eps)) fail(v, "the posed shapes within the tolerance at t", "farther apart");
+    const double len = std::hypot(double(r.normal.x()), double(r.normal.y()));
+    if (!(std::fabs(len - 1) <= 8 * detail::eps<T>())) fail(v, "a unit normal", "|normal| = " + num(len));
+  }
+  // Swapped: same time, reversed normal (at t = 0 from an overlap, a contact normal: its own law).
+  const CastResult<T> s = time_of_impact(b, sb, a, sa, max_t);
+  const bool start = r.hit() && t == 0 && v.relation == Relation::Overlapping;
+  if (s.outcome != r.outcome || s.t != r.t || (r.hit() && !start && s.normal != Vec2<T>(-r.normal))) {
+    fail(v, "the swapped query gives the same t and the reversed normal", describe_result(s));
+  }
+  return v;
+}
+
+#define COLLIDE_CAST_LAWS(T)                                                                                  \
+  template Verdict cast_law<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                        \
+  template Verdict cast_symmetry<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                   \
+  template Verdict cast_translation<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&, const Vec2<T>&); \
+  template Verdict cast_raycast<T>(const Shape<T>&, const RayInput<T>&, T);                                   \
+  template Verdict toi_law<T>(const Shape<T>&, const Sweep<T>&, const Shape<T>&, const Sweep<T>&, T,           \
+                              std::span<const double>);
+COLLIDE_CAST_LAWS(float)
+COLLIDE_CAST_LAWS(double)
+#undef COLLIDE_CAST_LAWS
+
+}  // namespace collide::laws

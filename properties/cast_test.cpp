@@ -1,0 +1,220 @@
+/// The property suite of moving shapes: the cast and time-of-impact laws (laws.hpp), for every pair
+/// of kinds from the registry and both scalars, one GoogleTest test each (suite = law, name =
+/// <pair>_<scalar>; the raycast agreement per kind), checked by RapidCheck.
+///
+/// Depth: RC_PARAMS as for the main suite; COLLIDE_CAST_DEPTH multiplies RapidCheck's
+/// max_success (ctest runs depth 1; `./harness verify` runs 10).
+///
+/// Motions are aimed: shapes from the placed pairs of generators.hpp, then a velocity that is
+/// random, aimed from one shape's inside to the other's (a head-on hit), or grazing: the pair is
+/// placed touching exactly, a moved back along a direction tangent to the contact (it touches at
+/// one instant or slides along a face) or along the normal (it meets head-on at a known time),
+/// sometimes at high speed over a short interval (a bullet through a thin sliver).
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "collide/laws/laws.hpp"
+#include "generators.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+namespace collide::props {
+namespace {
+
+/// A motion of a against b: a pair and its velocities.
+template <Scalar T>
+struct Motion {
+  Shape<T> a, b;
+  laws::CastInput<T> in;
+};
+
+/// v scaled so that it is exact in T (components rounded to T).
+template <Scalar T>
+Vec2<T> to_t(const Vec2c& v) {
+  return Vec2<T>(T(v.x()), T(v.y()));
+}
+
+/// Size of a pair (largest extent of either bounding box), at least 2^-30.
+template <Scalar T>
+double pair_size(const Shape<T>& a, const Shape<T>& b) {
+  double m = 0x1p-30;
+  for (const Shape<T>* s : {&a, &b}) {
+    const Aabb<T> box = bounds(*s);
+    m = std::max(m, (widen(box.max()) - widen(box.min())).maxCoeff());
+  }
+  return m;
+}
+
+template <Scalar T>
+Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
+  const int style = *rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {4, 2}});
+  const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.25), T(1), T(1), T(4)});
+  const double speed_scale = std::ldexp(1.0, *rc::gen::weightedElement<int>({{6, 0}, {1, 8}, {1, 20}}));
+  if (style == 0) {  // random motion of any placed pair
+    auto [a, b] = gen_pair<T>(ka, kb);
+    const double s = pair_size(a, b);
+    const Vec2<T> va = to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8 * speed_scale));
+    const Vec2<T> vb = *rc::gen::arbitrary<bool>() ? Vec2<T>(0, 0) : to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8));
+    return {a, b, {va, vb, max_t}};
+  }
+  if (style == 1) {  // aimed: from a's inside toward b's, arriving around t = max_t / 2 .. 2 max_t
+    auto [a, b] = gen_pair<T>(ka, kb, Placement::Separated);
+    const Vec2c d = inner_point(b) - inner_point(a);
+    const double k = double(*rc::gen::inRange(1, 9)) / 4 / double(max_t);
+    return {a, b, {to_t<T>(d * k * speed_scale), Vec2<T>(0, 0), max_t}};
+  }
+  // Grazing and head-on through a touching placement: a moved back along v by v * tc.
+  auto [a, b] = gen_pair<T>(ka, kb, Placement::Touching);
+  const auto c = contact(a, b);
+  const Vec2c n = c ? widen(c->normal) : Vec2c(1, 0);
+  const Vec2c tangent(-n.y(), n.x());
+  const double s = pair_size(a, b);
+  const int way = *rc::gen::inRange(0, 4);
+  Vec2c v = way == 0 ? n : way == 1 ? tangent : way == 2 ? Vec2c(tangent + n * std::ldexp(1.0, -*rc::gen::inRange(2, 30))) : Vec2c(tangent - n * 0x1p-20);
+  v *= s * speed_scale * (*rc::gen::arbitrary<bool>() ? 1 : -1) * (way == 0 ? 1 : 1);
+  if (way == 0 && v.dot(n) < 0) v = -v;  // head-on: a moves toward b
+  const Vec2<T> va = to_t<T>(v);
+  const double tc = double(max_t) * double(*rc::gen::inRange(1, 9)) / 8;
+  const Vec2<T> back = to_t<T>(-widen(va) * tc);
+  return {moved(a, back), b, {va, Vec2<T>(0, 0), max_t}};
+}
+
+/// A sweep for the time-of-impact law: centre of rotation at an inner point, angle 0 at time 0
+/// (so the pose at time 0 is the identity up to rounding), turning by up to two turns, its
+/// centre moving toward `toward` or at random.
+template <Scalar T>
+Sweep<T> gen_sweep(const Shape<T>& s, const Vec2c& toward, double size) {
+  Sweep<T> sw;
+  const Vec2c lc = inner_point(s);
+  sw.local_center = to_t<T>(lc);
+  sw.c0 = sw.local_center;
+  const int move = *rc::gen::inRange(0, 3);
+  const Vec2c d = move == 0 ? Vec2c(0, 0) : move == 1 ? Vec2c((toward - lc) * (double(*rc::gen::inRange(1, 9)) / 4))
+                                                      : Vec2c(grid(-8, 8), grid(-8, 8)) * (size / 4);
+  sw.c1 = to_t<T>(widen(sw.c0) + d);
+  const std::vector<double> turns = {0, 0.25, -0.25, 0.5, 1, -2, 1e-6, 0.125};
+  sw.a1 = T(*rc::gen::elementOf(turns) * 2 * std::numbers::pi);
+  return sw;
+}
+
+long depth() {
+  const char* s = std::getenv("COLLIDE_CAST_DEPTH");
+  const long d = s != nullptr ? std::atol(s) : 1;
+  return d > 0 ? d : 1;
+}
+
+/// Runs the property with max_success multiplied by COLLIDE_CAST_DEPTH.
+void check(const std::function<void()>& property) {
+  rc::detail::TestParams params = rc::detail::configuration().testParams;
+  params.maxSuccess = params.maxSuccess * static_cast<int>(depth());
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  rc::detail::TestMetadata metadata;
+  metadata.id = std::string(info->test_suite_name()) + "/" + info->name();
+  metadata.description = info->name();
+  const auto result = rc::detail::checkTestable(property, metadata, params);
+  if (!result.template is<rc::detail::SuccessResult>()) {
+    std::ostringstream msg;
+    rc::detail::printResultMessage(result, msg);
+    ADD_FAILURE() << msg.str();
+  }
+}
+
+/// Fails the property with the verdict's account (it holds every value in round-trip decimal).
+void judge(const laws::Verdict& v) {
+  RC_CLASSIFY(true, std::string(laws::name(v.relation)));
+  if (v.disagreement) RC_TAG(std::string("disagreement"));
+  if (!v.ok) RC_FAIL(v.account);
+}
+
+template <Scalar T>
+void register_pair(ShapeKind ka, ShapeKind kb) {
+  const std::string name = collide::name(make_pair(ka, kb)) + (std::is_same_v<T, float> ? "_float" : "_double");
+  auto reg = [&](const char* law, std::function<void()> property) {
+    ::testing::RegisterTest(law, name.c_str(), nullptr, nullptr, __FILE__, __LINE__, [=]() -> ::testing::Test* {
+      struct Body : ::testing::Test {
+        std::function<void()> property;
+        void TestBody() override { check(property); }
+      };
+      auto* t = new Body;
+      t->property = property;
+      return t;
+    });
+  };
+  reg("cast", [=] {
+    const Motion<T> m = gen_motion<T>(ka, kb);
+    judge(laws::cast_law(m.a, m.b, m.in));
+  });
+  reg("cast_symmetry", [=] {
+    const Motion<T> m = gen_motion<T>(ka, kb);
+    judge(laws::cast_symmetry(m.a, m.b, m.in));
+  });
+  reg("cast_translation", [=] {
+    const Motion<T> m = gen_motion<T>(ka, kb);
+    judge(laws::cast_translation(m.a, m.b, m.in, gen_translation<T>(pair_size(m.a, m.b))));
+  });
+  reg("toi", [=] {
+    const auto [a, b] = gen_pair<T>(ka, kb);
+    const double size = pair_size(a, b);
+    const Sweep<T> sa = gen_sweep(a, inner_point(b), size);
+    const Sweep<T> sb = *rc::gen::arbitrary<bool>() ? gen_sweep(b, inner_point(a), size) : [&] {
+      Sweep<T> still;
+      return still;
+    }();
+    const T max_t = *rc::gen::elementOf(std::vector<T>{T(1), T(1), T(0.5)});
+    const std::array<double, 8> samples = {0, 0.125, 0.25, 0.5, 0.75, 0.875, 0.999, 1};
+    judge(laws::toi_law(a, sa, b, sb, max_t, std::span<const double>(samples)));
+  });
+}
+
+template <Scalar T>
+void register_kind(ShapeKind k) {
+  const std::string name = std::string(collide::name(k)) + (std::is_same_v<T, float> ? "_float" : "_double");
+  ::testing::RegisterTest("cast_raycast", name.c_str(), nullptr, nullptr, __FILE__, __LINE__, [=]() -> ::testing::Test* {
+    struct Body : ::testing::Test {
+      ShapeKind k;
+      void TestBody() override {
+        const ShapeKind kind = k;
+        check([=] {
+          const auto [a, b] = gen_pair<T>(kind, kind);
+          const Vec2c from = inner_point(b), to = inner_point(a);
+          const bool aimed = *rc::gen::inRange(0, 4) != 0;
+          const Vec2<T> origin = to_t<T>(from);
+          const Vec2<T> dir = aimed ? to_t<T>(to - from) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
+          const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
+          judge(laws::cast_raycast(a, laws::RayInput<T>{origin, dir}, max_t));
+        });
+      }
+    };
+    auto* t = new Body;
+    t->k = k;
+    return t;
+  });
+}
+
+void register_all() {
+  for_each_pair([]<ShapeKind A, ShapeKind B>() {
+    register_pair<float>(A, B);
+    register_pair<double>(A, B);
+  });
+  for_each_kind([]<ShapeKind K>() {
+    register_kind<float>(K);
+    register_kind<double>(K);
+  });
+}
+
+}  // namespace
+}  // namespace collide::props
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  collide::props::register_all();
+  return RUN_ALL_TESTS();
+}
