@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   const bool narrow = bench::register_narrowphase();
   const bool broad = bench::register_broadphase();
-  if (!narrow || !broad) {
+  const bool loop = bench::register_game_loop();
+  if (!narrow || !broad || !loop) {
     std::fprintf(stderr, "cross-check FAILED: collide and its peers disagree; nothing was timed\n");
     return 1;
   }

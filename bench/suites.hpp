@@ -5,4 +5,5 @@
 namespace bench {
 bool register_narrowphase();
 bool register_broadphase();
+bool register_game_loop();
 }  // namespace bench
