@@ -12,10 +12,11 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   const bool narrow = bench::register_narrowphase();
   const bool broad = bench::register_broadphase();
+  const bool loop = bench::register_game_loop();
 #if defined(COLLIDE_BENCH_CAST)
   bench::register_cast();
 #endif
-  if (!narrow || !broad) {
+  if (!narrow || !broad || !loop) {
     std::fprintf(stderr, "cross-check FAILED: collide and its peers disagree; nothing was timed\n");
     return 1;
   }

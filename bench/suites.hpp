@@ -5,5 +5,6 @@
 namespace bench {
 bool register_narrowphase();
 bool register_broadphase();
+bool register_game_loop();
 bool register_cast();  // bench/cast.cpp, built when the exact oracle is available
 }  // namespace bench
