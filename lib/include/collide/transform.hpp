@@ -75,12 +75,16 @@ class Transform {
     const Vec2c r = widen(rotation);
     if (std::fabs(r.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
       return Transform(position, rotation);
-    const Calc len = std::hypot(r.x(), r.y());
+    // Scaled by a power of two first (exact), so that a subnormal vector keeps its direction.
+    int exp2 = 0;
+    static_cast<void>(std::frexp(r.cwiseAbs().maxCoeff(), &exp2));
+    const Vec2c rs(std::ldexp(r.x(), -exp2), std::ldexp(r.y(), -exp2));
+    const Calc len = std::hypot(rs.x(), rs.y());
 #if defined(COLLIDE_PLANTED_FAULT)
     if (!(len > 0)) return Transform(position, Vec2<T>(T(1), T(0)));  // the planted fault: a zero rotation accepted
 #endif
     if (!(len > 0)) return ShapeError(Error::ZeroRotation, -1, "transform rotation is the zero vector");
-    return Transform(position, (r / len).template cast<T>());
+    return Transform(position, (rs / len).template cast<T>());
   }
 
   /// A pure translation (rotation (1, 0)). Errors: NonFinite, OutOfRange (index 0, 1).
