@@ -189,7 +189,7 @@ void register_kind(ShapeKind k) {
           const Vec2<T> origin = to_t<T>(from);
           const Vec2<T> dir = aimed ? to_t<T>(to - from) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
           const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
-          judge(laws::cast_raycast(a, laws::RayInput<T>{origin, dir}, max_t));
+          judge(laws::cast_raycast(a, Ray<T>{origin, dir}, max_t));
         });
       }
     };

@@ -48,6 +48,18 @@ TYPED_TEST(Transforms, UnitRotationKeptOtherVectorsNormalised) {
   EXPECT_FALSE(scaled.is_identity());
 }
 
+TYPED_TEST(Transforms, SubnormalRotationNormalisedAlongItsDirection) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // (211, 1) units of the smallest subnormal: normalised after an exact scaling by a power of
+  // two, not from its few significant bits (which gave (1, 0.0047393), |q|^2 - 1 = 2.2e-5).
+  const T d = std::numeric_limits<T>::denorm_min();
+  const auto x = Transform<T>::make_with_rotation(V(0, 0), V(T(211) * d, d)).value();
+  const Vec2c unit = Vec2c(211, 1).normalized();
+  EXPECT_LE((widen(x.rotation()) - unit).cwiseAbs().maxCoeff(), 2 * double(std::numeric_limits<T>::epsilon()));
+  EXPECT_LE(std::fabs(widen(x.rotation()).squaredNorm() - 1), 4 * double(std::numeric_limits<T>::epsilon()));
+}
+
 TYPED_TEST(Transforms, QuarterTurnsAndTranslationsGiveTheWorldAnswers) {
   using T = TypeParam;
   using V = Vec2<T>;

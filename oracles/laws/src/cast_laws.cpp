@@ -195,7 +195,7 @@ Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T
 }
 
 template <Scalar T>
-Verdict cast_raycast(const Shape<T>& s, const RayInput<T>& ray, T max_t) {
+Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t) {
   Verdict v;
   const Circle<T> dot(ray.origin, T(0));
   const Vec2<T> zero(0, 0);
@@ -274,7 +274,7 @@ Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const 
   template Verdict cast_law<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                        \
   template Verdict cast_symmetry<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                   \
   template Verdict cast_translation<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&, const Vec2<T>&); \
-  template Verdict cast_raycast<T>(const Shape<T>&, const RayInput<T>&, T);                                   \
+  template Verdict cast_raycast<T>(const Shape<T>&, const Ray<T>&, T);                                   \
   template Verdict toi_law<T>(const Shape<T>&, const Sweep<T>&, const Shape<T>&, const Sweep<T>&, T,           \
                               std::span<const double>);
 COLLIDE_CAST_LAWS(float)

@@ -459,7 +459,10 @@ Verdict transform_rejection(std::span<const T> values) {
       if (std::fabs(rc.squaredNorm() - 1) <= 4 * detail::eps<T>()) {
         j.require(er->rotation() == r, "a unit rotation kept bit for bit", vec(er->rotation()));
       } else {
-        const Vec2c unit = rc / std::hypot(rc.x(), rc.y());
+        int exp2 = 0;  // scaled by a power of two first (exact): a subnormal r keeps its direction
+        static_cast<void>(std::frexp(rc.cwiseAbs().maxCoeff(), &exp2));
+        const Vec2c rs(std::ldexp(rc.x(), -exp2), std::ldexp(rc.y(), -exp2));
+        const Vec2c unit = rs / std::hypot(rs.x(), rs.y());
         j.require((q - unit).cwiseAbs().maxCoeff() <= 2 * detail::eps<T>() && std::fabs(q.squaredNorm() - 1) <= 4 * detail::eps<T>(),
                   "the rotation normalised: " + vec(unit), vec(er->rotation()));
       }

@@ -348,7 +348,7 @@ Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T
 /// with raycast(s, ray, max_t) on hit or miss, except for a ray passing within the larger of the
 /// two tolerances (a disagreement); both start inside: both at t = 0.
 template <Scalar T>
-Verdict cast_raycast(const Shape<T>& s, const RayInput<T>& ray, T max_t);
+Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
 /// Time-of-impact law. time_of_impact(a, sa, b, sb, max_t), judged by time_of_impact.hpp's
 /// contract with eps = toi_tolerance(): a valid answer with 0 <= t <= max_t; at each sample time
