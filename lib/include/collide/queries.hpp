@@ -386,17 +386,6 @@ Calc resolve_margin(const A& a, const B& b, Calc depth) {
 
 namespace detail {
 
-/// Whether a push must be checked by testing the moved shape: only where rounding can defeat the
-/// margin's proof. A rigid primitive (circle, box, capsule) moved by v has every stored coordinate
-/// rounded by at most eps_T / 2 (S_a + |v|), which the margin covers; a polygon may be replaced by
-/// the hull of its rounded vertices (translated()), and a compound's push is the support gap of
-/// every child it meets, so those two are tested.
-template <class A>
-struct PushNeedsTest : std::bool_constant<is_compound_v<A>> {};
-template <Scalar T>
-struct PushNeedsTest<ConvexPolygon<T>> : std::true_type {};
-template <class A>
-inline constexpr bool push_needs_test_v = PushNeedsTest<std::remove_cvref_t<A>>::value;
 
 /// resolve() on concrete shapes, stored or placed: the push in T. s_moved is the largest stored
 /// magnitude of a that a move rounds; extra is added to the margin (the placements' bound);
@@ -423,13 +412,13 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
   });
   Calc margin = margin_of<T>(s_pair, s_moved, best_t) + extra;
   Vec2<T> v = round_toward_zero<T>(-best_n * (best_t + margin));
-  if constexpr (push_needs_test_v<A> || push_needs_test_v<B>) {
-    for (int attempt = 0; attempt < 8; ++attempt) {
-      const std::optional<bool> still = still_overlaps(v);
-      if (!still || !*still) break;
-      margin *= 2;
-      v = round_toward_zero<T>(-best_n * (best_t + margin));
-    }
+  // The moved shape is tested: for subnormal shapes of very different sizes the rounded depth
+  // can fall short by more than the margin.
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const std::optional<bool> still = still_overlaps(v);
+    if (!still || !*still) break;
+    margin *= 2;
+    v = round_toward_zero<T>(-best_n * (best_t + margin));
   }
   return v;
 }
