@@ -1,6 +1,7 @@
-/// The property suite of moving shapes: the cast and time-of-impact laws (laws.hpp), for every pair
-/// of kinds from the registry and both scalars, one GoogleTest test each (suite = law, name =
-/// <pair>_<scalar>; the raycast agreement per kind), checked by RapidCheck.
+/// The property suite of moving shapes: the cast and time-of-impact laws (the law table's Moving
+/// suite), for every pair of kinds from the registry and both scalars, one GoogleTest test each
+/// (suite = law, name = <pair>_<scalar>; the raycast agreement per kind), checked by RapidCheck.
+/// A counterexample is saved as a case file (law_tests.hpp).
 ///
 /// Depth: RC_PARAMS as for the main suite; COLLIDE_CAST_DEPTH multiplies RapidCheck's
 /// max_success (ctest runs depth 1; `./harness verify` runs 10).
@@ -16,6 +17,7 @@
 
 #include "collide/laws/laws.hpp"
 #include "generators.hpp"
+#include "law_tests.hpp"
 
 #include <array>
 #include <cmath>
@@ -23,6 +25,7 @@
 #include <functional>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -127,87 +130,118 @@ void check(const std::function<void()>& property) {
   }
 }
 
-/// Fails the property with the verdict's account (it holds every value in round-trip decimal).
-void judge(const laws::Verdict& v) {
+std::optional<laws::Case> g_case;  // the last failing input (after shrinking), saved once per test
+
+/// Fails the property with the verdict's account (it holds every value in round-trip decimal),
+/// keeping its input as a case (make()).
+void judge(const laws::Verdict& v, const std::function<laws::Case()>& make) {
   RC_CLASSIFY(true, std::string(laws::name(v.relation)));
   if (v.disagreement) RC_TAG(std::string("disagreement"));
-  if (!v.ok) RC_FAIL(v.account);
+  if (!v.ok) {
+    g_case = make();
+    RC_FAIL(v.account);
+  }
+}
+
+/// A case of a cast law: the shapes, the motion and the verdict.
+template <Scalar T>
+laws::Case motion_case(laws::Law law, const Motion<T>& m, const laws::Verdict& v, const std::string& test) {
+  laws::Case c = laws::make_case<T>(law, m.a, m.b, v, "property " + test + " " + seed_text());
+  c.vax = m.in.va.x();
+  c.vay = m.in.va.y();
+  c.vbx = m.in.vb.x();
+  c.vby = m.in.vb.y();
+  c.max_t = m.in.max_t;
+  return c;
 }
 
 template <Scalar T>
-void register_pair(ShapeKind ka, ShapeKind kb) {
-  const std::string name = collide::name(make_pair(ka, kb)) + (std::is_same_v<T, float> ? "_float" : "_double");
-  auto reg = [&](const char* law, std::function<void()> property) {
-    ::testing::RegisterTest(law, name.c_str(), nullptr, nullptr, __FILE__, __LINE__, [=]() -> ::testing::Test* {
-      struct Body : ::testing::Test {
-        std::function<void()> property;
-        void TestBody() override { check(property); }
+std::array<double, 8> sweep_values(const Sweep<T>& s) {
+  return {s.local_center.x(), s.local_center.y(), s.c0.x(), s.c0.y(), s.c1.x(), s.c1.y(), s.a0, s.a1};
+}
+
+/// The property of a law of the Moving suite for the kinds ka and kb (kb is ka for cast_raycast);
+/// empty for a law of another suite.
+template <Scalar T>
+std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+  using laws::Law;
+  switch (law) {
+    case Law::Cast:
+      return [=] {
+        const Motion<T> m = gen_motion<T>(ka, kb);
+        const laws::Verdict v = laws::cast_law(m.a, m.b, m.in);
+        judge(v, [&] { return motion_case(law, m, v, test); });
       };
-      auto* t = new Body;
-      t->property = property;
-      return t;
-    });
-  };
-  reg("cast", [=] {
-    const Motion<T> m = gen_motion<T>(ka, kb);
-    judge(laws::cast_law(m.a, m.b, m.in));
-  });
-  reg("cast_symmetry", [=] {
-    const Motion<T> m = gen_motion<T>(ka, kb);
-    judge(laws::cast_symmetry(m.a, m.b, m.in));
-  });
-  reg("cast_translation", [=] {
-    const Motion<T> m = gen_motion<T>(ka, kb);
-    judge(laws::cast_translation(m.a, m.b, m.in, gen_translation<T>(pair_size(m.a, m.b))));
-  });
-  reg("toi", [=] {
-    const auto [a, b] = gen_pair<T>(ka, kb);
-    const double size = pair_size(a, b);
-    const Sweep<T> sa = gen_sweep(a, inner_point(b), size);
-    const Sweep<T> sb = *rc::gen::arbitrary<bool>() ? gen_sweep(b, inner_point(a), size) : [&] {
-      Sweep<T> still;
-      return still;
-    }();
-    const T max_t = *rc::gen::elementOf(std::vector<T>{T(1), T(1), T(0.5)});
-    const std::array<double, 8> samples = {0, 0.125, 0.25, 0.5, 0.75, 0.875, 0.999, 1};
-    judge(laws::toi_law(a, sa, b, sb, max_t, std::span<const double>(samples)));
-  });
-}
-
-template <Scalar T>
-void register_kind(ShapeKind k) {
-  const std::string name = std::string(collide::name(k)) + (std::is_same_v<T, float> ? "_float" : "_double");
-  ::testing::RegisterTest("cast_raycast", name.c_str(), nullptr, nullptr, __FILE__, __LINE__, [=]() -> ::testing::Test* {
-    struct Body : ::testing::Test {
-      ShapeKind k;
-      void TestBody() override {
-        const ShapeKind kind = k;
-        check([=] {
-          const auto [a, b] = gen_pair<T>(kind, kind);
-          const Vec2c from = inner_point(b), to = inner_point(a);
-          const bool aimed = *rc::gen::inRange(0, 4) != 0;
-          const Vec2<T> origin = to_t<T>(from);
-          const Vec2<T> dir = aimed ? to_t<T>(to - from) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
-          const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
-          judge(laws::cast_raycast(a, Ray<T>{origin, dir}, max_t));
+    case Law::CastSymmetry:
+      return [=] {
+        const Motion<T> m = gen_motion<T>(ka, kb);
+        const laws::Verdict v = laws::cast_symmetry(m.a, m.b, m.in);
+        judge(v, [&] { return motion_case(law, m, v, test); });
+      };
+    case Law::CastTranslation:
+      return [=] {
+        const Motion<T> m = gen_motion<T>(ka, kb);
+        const Vec2<T> d = gen_translation<T>(pair_size(m.a, m.b));
+        const laws::Verdict v = laws::cast_translation(m.a, m.b, m.in, d);
+        judge(v, [&] {
+          laws::Case c = motion_case(law, m, v, test);
+          c.tx = d.x();
+          c.ty = d.y();
+          return c;
         });
-      }
-    };
-    auto* t = new Body;
-    t->k = k;
-    return t;
-  });
+      };
+    case Law::Toi:
+      return [=] {
+        const auto [a, b] = gen_pair<T>(ka, kb);
+        const double size = pair_size(a, b);
+        const Sweep<T> sa = gen_sweep(a, inner_point(b), size);
+        const Sweep<T> sb = *rc::gen::arbitrary<bool>() ? gen_sweep(b, inner_point(a), size) : Sweep<T>{};
+        const T max_t = *rc::gen::elementOf(std::vector<T>{T(1), T(1), T(0.5)});
+        const laws::Verdict v = laws::toi_law(a, sa, b, sb, max_t, std::span<const double>(laws::kToiSamples));
+        judge(v, [&] {
+          laws::Case c = laws::make_case<T>(law, a, b, v, "property " + test + " " + seed_text());
+          c.sweep_a = sweep_values(sa);
+          c.sweep_b = sweep_values(sb);
+          c.max_t = max_t;
+          return c;
+        });
+      };
+    case Law::CastRaycast:
+      return [=] {
+        const auto [a, b] = gen_pair<T>(ka, ka);
+        const Vec2c from = inner_point(b), to = inner_point(a);
+        const bool aimed = *rc::gen::inRange(0, 4) != 0;
+        const Vec2<T> origin = to_t<T>(from);
+        const Vec2<T> dir = aimed ? to_t<T>(to - from) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
+        const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
+        const laws::Verdict v = laws::cast_raycast(a, Ray<T>{origin, dir}, max_t);
+        judge(v, [&] {
+          laws::Case c = laws::make_case<T>(law, a, std::nullopt, v, "property " + test + " " + seed_text());
+          c.ox = origin.x();
+          c.oy = origin.y();
+          c.dx = dir.x();
+          c.dy = dir.y();
+          c.max_t = max_t;
+          return c;
+        });
+      };
+    default: break;
+  }
+  return {};
 }
 
+/// Every law of the Moving suite, over what it takes (law_tests.hpp); each test runs
+/// COLLIDE_CAST_DEPTH times RapidCheck's max_success and saves its counterexample.
 void register_all() {
-  for_each_pair([]<ShapeKind A, ShapeKind B>() {
-    register_pair<float>(A, B);
-    register_pair<double>(A, B);
-  });
-  for_each_kind([]<ShapeKind K>() {
-    register_kind<float>(K);
-    register_kind<double>(K);
-  });
+  register_suite(
+      laws::LawSuite::Moving, []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+        return property_of<T>(law, ka, kb, test);
+      },
+      [](const std::function<void()>& property) {
+        g_case.reset();
+        check(property);
+        if (g_case) save_counterexample(*g_case);
+      });
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-/// The property suite: every law, for every pair of kinds from the registry and both scalars, as
-/// one GoogleTest test each (suite = law, name = <pair>_<scalar>), checked by RapidCheck.
+/// The property suite of world-space shapes: every law of the law table's Static suite, for every
+/// pair of kinds from the registry and both scalars, as one GoogleTest test each (suite = law,
+/// name = <pair>_<scalar>), checked by RapidCheck.
 ///
 /// Per test it records the cases, their exact relation (RC_CLASSIFY), disagreements within the
 /// band and failures; with COLLIDE_PROPS_REPORT set, one JSON line per test is appended there.
@@ -13,6 +14,7 @@
 #include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
 #include "generators.hpp"
+#include "law_tests.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -48,20 +50,6 @@ struct Tally {
 
 Tally g_tally;
 
-std::string env_or(const char* key, const std::string& fallback) {
-  const char* v = std::getenv(key);
-  return v != nullptr && *v != '\0' ? std::string(v) : fallback;
-}
-
-/// The seed RapidCheck runs with (from RC_PARAMS), for the case file's source line.
-std::string seed_text() {
-  const std::string params = env_or("RC_PARAMS", "");
-  const auto at = params.find("seed=");
-  if (at == std::string::npos) return "seed random";
-  const auto end = params.find(' ', at);
-  return "seed " + params.substr(at + 5, end == std::string::npos ? std::string::npos : end - at - 5);
-}
-
 /// Checks a verdict inside a property: counts it, keeps the input when it fails, asserts.
 template <Scalar T>
 void judge(const laws::Verdict& v, laws::Law law, const std::string& pair, const Shape<T>& a,
@@ -86,15 +74,7 @@ long disagreement_ceiling(const std::string& test, long cases);
 /// Saves the counterexample and writes the test's record.
 void finish(const std::string& law, const std::string& pair, const std::string& scalar) {
   std::string saved;
-  if (g_tally.counterexample) {
-    try {
-      const std::filesystem::path dir = env_or("COLLIDE_CASES_DIR", COLLIDE_REGRESSIONS_DIR);
-      saved = laws::save_case(dir, *g_tally.counterexample).string();
-      std::cout << "counterexample saved: " << saved << std::endl;
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "could not save the counterexample: " << e.what();
-    }
-  }
+  if (g_tally.counterexample) saved = save_counterexample(*g_tally.counterexample);
   const std::string report = env_or("COLLIDE_PROPS_REPORT", "");
   if (!report.empty()) {
     nlohmann::json record = {{"law", law},
@@ -174,8 +154,8 @@ void expect_disagreement_ceiling(const std::string& what) {
 }
 
 /// The property of `law` for the kinds ka and kb (kb is ka for the laws of one shape), as a
-/// RapidCheck body. A switch over the law table: a law added to it without its generator here
-/// fails to compile (-Wswitch).
+/// RapidCheck body; empty for a law of another suite (a law of this suite without one registers a
+/// failing test that names it).
 template <Scalar T>
 std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& subject) {
   using laws::Law;
@@ -263,8 +243,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const auto [a, b] = gen_pair<T>(ka, ka);
         const Vec2<T> p = gen_point_near(a);
         judge<T>(laws::contains_law(a, p), law, subject, a, std::nullopt, false, [=](laws::Case& c) {
-          c.ox = p.x();
-          c.oy = p.y();
+          c.px = p.x();
+          c.py = p.y();
         });
       };
     case Law::Scene:
@@ -313,6 +293,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         }
         if (!v.ok) RC_FAIL(v.account);
       };
+    default: break;
   }
   return {};
 }
@@ -331,6 +312,7 @@ void register_test(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string&
              laws::Relation::Contained};
   }
   const std::function<void()> property = property_of<T>(law, ka, kb, subject);
+  if (!property) return register_missing_generator(law_name, subject + "_" + scalar);
   ::testing::RegisterTest(law_name.c_str(), (subject + "_" + scalar).c_str(), nullptr, nullptr, __FILE__, __LINE__,
                           [=]() -> ::testing::Test* {
                             struct Body : ::testing::Test {
@@ -356,25 +338,12 @@ void register_test(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string&
                           });
 }
 
-/// Every law of the table, over what it takes: each unordered pair of kinds, each kind, or the
-/// one scene (named after the compound that holds it); both scalars.
+/// Every law of the Static suite, over what it takes (law_tests.hpp).
 void register_all() {
-  for (const laws::LawInfo& row : laws::kLaws) {
-    auto both = [&](ShapeKind ka, ShapeKind kb, const std::string& subject) {
-      register_test<float>(row.law, ka, kb, subject);
-      register_test<double>(row.law, ka, kb, subject);
-    };
-    switch (row.inputs) {
-      case laws::LawInputs::Pair:
-        for (const KindPair p : kPairs) both(p.first, p.second, name(p));
-        break;
-      case laws::LawInputs::Shape:
-      case laws::LawInputs::Values:
-        for (const ShapeKind k : kKinds) both(k, k, std::string(name(k)));
-        break;
-      case laws::LawInputs::Scene: both(ShapeKind::Compound, ShapeKind::Compound, "compound"); break;
-    }
-  }
+  for_each_law_test(laws::LawSuite::Static, []<Scalar T>(const laws::LawInfo& row, ShapeKind ka, ShapeKind kb,
+                                                          const std::string& subject) {
+    register_test<T>(row.law, ka, kb, subject);
+  });
 }
 
 }  // namespace

@@ -8,12 +8,14 @@ bounding-box early-out uses the AABB test) and prints whether it caught the faul
 every law that can see the fault caught it. Counterexamples go to CASES_DIR (never into
 tests/regressions).
 
-With --transform, SUITE_EXECUTABLE is the transform suite (transform_test.cpp) built against the
-transform faults (scripts/planted_faults.txt: images turned the wrong way, a zero rotation
-accepted, a resolution margin 64 times too long): each transform law must catch one, on pairs
-without an AABB (so that the AABB slip is not what it sees).
+With --suite placed, SUITE_EXECUTABLE is the suite of placed shapes (transform_test.cpp) built
+against the transform faults (scripts/planted_faults.txt: images turned the wrong way, a zero
+rotation accepted, a resolution margin 64 times too long); with --suite moving, the suite of moving
+shapes (cast_test.cpp) built against the cast faults. Every law of that suite (the law table's
+`suite` column, from collide_describe) must catch one; the placed suite runs on pairs without an
+AABB (so that the AABB slip is not what it sees).
 
-usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR [--transform]
+usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR [--suite placed|moving]
 """
 
 import json
@@ -32,12 +34,13 @@ import collide_tools  # noqa: E402
 MUST_CATCH = ["agreement", "symmetry", "translation", "rotation", "resolution", "hierarchy",
               "representation", "distance"]
 
-# --transform: every transform law must catch the transform faults; the filter avoids AABBs.
-TRANSFORM_LAWS = ["placed_agreement", "placed_outputs", "placed_resolution", "placed_shape",
-                  "placed_covariance", "placed_image", "transform_rejection"]
-TRANSFORM_FILTER = ":".join("{law}." + t for t in [
-    "circle_obb*", "circle_polygon*", "obb_obb*", "obb_capsule*", "obb_polygon*", "capsule_polygon*",
-    "polygon_polygon*", "obb_float", "obb_double", "polygon_float", "polygon_double", "float", "double"])
+# --suite: the tests each law of the suite runs on.
+SUITE_FILTERS = {
+    "placed": ":".join("{law}." + t for t in [
+        "circle_obb*", "circle_polygon*", "obb_obb*", "obb_capsule*", "obb_polygon*", "capsule_polygon*",
+        "polygon_polygon*", "obb_float", "obb_double", "polygon_float", "polygon_double", "float", "double"]),
+    "moving": "{law}.*",
+}
 
 
 def run(exe, law, cases_dir, pattern="{law}.*aabb*:{law}.compound_compound*"):
@@ -50,16 +53,20 @@ def run(exe, law, cases_dir, pattern="{law}.*aabb*:{law}.compound_compound*"):
     return proc.returncode != 0, collide_tools.gtest_failures(report)
 
 
+def law_table(describe):
+    return json.loads(subprocess.run([describe, "--laws"], capture_output=True, text=True, check=True).stdout)
+
+
 def main():
-    transform = "--transform" in sys.argv[4:]
-    if len(sys.argv) != (5 if transform else 4):
+    suite = sys.argv[5] if len(sys.argv) == 6 and sys.argv[4] == "--suite" else None
+    if len(sys.argv) != (6 if suite else 4) or (suite and suite not in SUITE_FILTERS):
         print(__doc__)
         return 2
     exe, describe, cases_dir = sys.argv[1:4]
-    if transform:
-        return check_transform_laws(exe, cases_dir)
-    laws = [law["name"] for law in json.loads(subprocess.run([describe, "--laws"], capture_output=True,
-                                                             text=True, check=True).stdout)]
+    if suite:
+        return check_suite(exe, [law["name"] for law in law_table(describe) if law["suite"] == suite], suite,
+                           cases_dir)
+    laws = [law["name"] for law in law_table(describe) if law["suite"] == "static"]
     unknown = [law for law in MUST_CATCH if law not in laws]
     if unknown:
         print(f"planted_fault.py: {', '.join(unknown)} not in the law table")
@@ -79,16 +86,16 @@ def main():
     return 0 if ok else 1
 
 
-def check_transform_laws(exe, cases_dir):
+def check_suite(exe, laws, suite, cases_dir):
     os.makedirs(cases_dir, exist_ok=True)
     rows, ok = [], True
-    for law in TRANSFORM_LAWS:
-        caught, tests = run(exe, law, cases_dir, TRANSFORM_FILTER)
+    for law in laws:
+        caught, tests = run(exe, law, cases_dir, SUITE_FILTERS[suite])
         rows.append([law, "yes" if caught else "NO", ", ".join(tests[:6]) + (" ..." if len(tests) > 6 else "")])
         ok = ok and caught
     collide_tools.print_table(["law", "caught", "failing tests"], rows)
-    print("planted transform faults", "CAUGHT by every transform law" if ok else "MISSED by a transform law")
-    return 0 if ok else 1
+    print(f"planted faults of the {suite} suite", "CAUGHT by every law" if ok else "MISSED by a law")
+    return 0 if ok and laws else 1
 
 
 if __name__ == "__main__":

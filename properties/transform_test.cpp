@@ -1,19 +1,22 @@
-/// The transform laws (laws.hpp, law 10), for every pair of kinds from the registry and both
-/// scalars, as one GoogleTest test each (suite = law, name = <pair>_<scalar>), checked by
-/// RapidCheck. Shapes come from the pair generator (placed against each other in world space),
+/// The laws of placed shapes (the law table's Placed suite), for every pair of kinds from the
+/// registry and both scalars, as one GoogleTest test each (suite = law, name = <pair>_<scalar>),
+/// checked by RapidCheck. Shapes come from the pair generator (placed against each other in world space),
 /// then both are placed by one transform (the pair's relation survives, up to rounding: the
 /// boundary cases stay at the boundary) or each by its own; compounds sometimes carry child
-/// transforms. A failing case is reported with its values in the failure message.
+/// transforms. A failing case is reported with its values in the failure message and saved as a
+/// case file (law_tests.hpp).
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include "collide/laws/laws.hpp"
 #include "generators.hpp"
+#include "law_tests.hpp"
 
 #include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,94 +67,29 @@ Shape<T> with_child_transforms(const Shape<T>& s, double scale) {
   return Compound<T>::make_placed(std::move(kids)).value();
 }
 
-std::string g_last;  // the failing verdict's account, printed once per test
+std::string g_last;                  // the failing verdict's account, printed once per test
+std::optional<laws::Case> g_case;    // the last failing input (after shrinking), saved once per test
 
-void judge(const laws::Verdict& v) {
+/// Fails the property with the verdict's account, keeping its input as a case (make()).
+void judge(const laws::Verdict& v, const std::function<laws::Case()>& make) {
   if (v.disagreement) RC_TAG(std::string("disagreement"));
   RC_CLASSIFY(true, std::string(laws::name(v.relation)));
   if (!v.ok) {
     g_last = v.account;
+    g_case = make();
     RC_FAIL(v.account);
   }
 }
 
-/// One GoogleTest test running one property; a failure's account is printed once.
-void register_test(const std::string& suite, const std::string& name, std::function<void()> property) {
-  ::testing::RegisterTest(suite.c_str(), name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
-                          [property]() -> ::testing::Test* {
-                            struct Body : ::testing::Test {
-                              std::function<void()> property;
-                              void TestBody() override {
-                                g_last.clear();
-                                ::rc::detail::checkGTest(property);
-                                if (!g_last.empty()) ADD_FAILURE() << g_last;
-                              }
-                            };
-                            auto* t = new Body;
-                            t->property = property;
-                            return t;
-                          });
-}
-
+/// A case of a law of placed shapes: the shapes, their transforms and the verdict.
 template <Scalar T>
-void register_pair(ShapeKind ka, ShapeKind kb) {
-  const std::string pair = std::string(name(make_pair(ka, kb)));
-  const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
-  // Both placed by one transform, or each by its own.
-  const auto placed_pair = [=] {
-    auto [a, b] = gen_pair<T>(ka, kb);
-    const double s = scale_of_pair(a, b);
-    a = with_child_transforms(a, s);
-    b = with_child_transforms(b, s);
-    const Transform<T> xa = gen_transform<T>(s);
-    const Transform<T> xb = *rc::gen::inRange(0, 3) == 0 ? gen_transform<T>(s) : xa;
-    return std::tuple{a, xa, b, xb};
-  };
-  std::vector<std::pair<std::string, std::function<void()>>> laws_of_pair = {
-      {"placed_agreement", [=] {
-         const auto [a, xa, b, xb] = placed_pair();
-         judge(laws::placed_agreement(a, xa, b, xb));
-       }},
-      {"placed_outputs", [=] {
-         const auto [a, xa, b, xb] = placed_pair();
-         judge(laws::placed_outputs(a, xa, b, xb));
-       }},
-      {"placed_resolution", [=] {
-         const auto [a, xa, b, xb] = placed_pair();
-         judge(laws::placed_resolution(a, xa, b, xb));
-       }},
-      {"placed_covariance", [=] {
-         auto [a, b] = gen_pair<T>(ka, kb);
-         judge(laws::placed_covariance(a, b, gen_transform<T>(scale_of_pair(a, b))));
-       }},
-      {"placed_image", [=] {
-         auto [a, b] = gen_pair<T>(ka, kb);
-         const double s = scale_of_pair(a, b);
-         a = with_child_transforms(a, s);
-         judge(laws::placed_image(a, gen_transform<T>(s), b));
-       }},
-  };
-  for (auto& [law, property] : laws_of_pair) register_test(law, pair + "_" + scalar, property);
-}
-
-template <Scalar T>
-void register_kind(ShapeKind k) {
-  const std::string kind = std::string(name(k));
-  const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
-  const std::function<void()> prop = [=] {
-    auto [a, b] = gen_pair<T>(k, k);
-    const double s = scale_of_pair(a, b);
-    a = with_child_transforms(a, s);
-    const Transform<T> x = gen_transform<T>(s);
-    const Vec2<T> p = gen_point_near(a);
-    const Vec2<T> q(x.apply(widen(p)).template cast<T>());  // near the placed shape, when p is finite
-    const Vec2<T> origin(x.apply(inner_point(b)).template cast<T>());
-    const Vec2<T> target(x.apply(inner_point(a)).template cast<T>());
-    const Vec2<T> dir = *rc::gen::inRange(0, 4) != 0 ? Vec2<T>(target - origin) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
-    const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2)});
-    judge(laws::placed_shape(a, x, p.allFinite() ? q : p, Ray<T>{origin, dir}, max_t));
-  };
-  register_test("placed_shape", kind + "_" + scalar, prop);
+laws::Case placed_case(laws::Law law, const Shape<T>& a, std::optional<Transform<T>> xa,
+                       const std::optional<Shape<T>>& b, std::optional<Transform<T>> xb, const laws::Verdict& v,
+                       const std::string& test) {
+  laws::Case c = laws::make_case<T>(law, a, b, v, "property " + test + " " + seed_text());
+  if (xa) c.transform_a = laws::to_data(*xa);
+  if (xb) c.transform_b = laws::to_data(*xb);
+  return c;
 }
 
 /// Raw values for the transform factories: bit patterns, special values, a zero or unit rotation.
@@ -166,22 +104,111 @@ std::vector<T> gen_transform_values() {
   return v;
 }
 
+/// The property of a law of the Placed suite for the kinds ka and kb (kb is ka for placed_shape);
+/// empty for a law of another suite.
 template <Scalar T>
-void register_rejection() {
-  const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
-  const std::function<void()> prop = [] {
-    const std::vector<T> v = gen_transform_values<T>();
-    judge(laws::transform_rejection<T>(std::span<const T>(v)));
+std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+  using laws::Law;
+  // Both placed by one transform, or each by its own.
+  const auto placed_pair = [=] {
+    auto [a, b] = gen_pair<T>(ka, kb);
+    const double s = scale_of_pair(a, b);
+    a = with_child_transforms(a, s);
+    b = with_child_transforms(b, s);
+    const Transform<T> xa = gen_transform<T>(s);
+    const Transform<T> xb = *rc::gen::inRange(0, 3) == 0 ? gen_transform<T>(s) : xa;
+    return std::tuple{a, xa, b, xb};
   };
-  register_test("transform_rejection", scalar, prop);
+  using PairLaw = laws::Verdict (*)(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);
+  const auto pair_law = [=](PairLaw f) -> std::function<void()> {
+    return [=] {
+      const auto [a, xa, b, xb] = placed_pair();
+      const laws::Verdict v = f(a, xa, b, xb);
+      judge(v, [&] { return placed_case<T>(law, a, xa, b, xb, v, test); });
+    };
+  };
+  switch (law) {
+    case Law::PlacedAgreement: return pair_law(&laws::placed_agreement<T>);
+    case Law::PlacedOutputs: return pair_law(&laws::placed_outputs<T>);
+    case Law::PlacedResolution: return pair_law(&laws::placed_resolution<T>);
+    case Law::PlacedCovariance:
+      return [=] {
+        auto [a, b] = gen_pair<T>(ka, kb);
+        const Transform<T> x = gen_transform<T>(scale_of_pair(a, b));
+        const laws::Verdict v = laws::placed_covariance(a, b, x);
+        judge(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
+      };
+    case Law::PlacedImage:
+      return [=] {
+        auto [a, b] = gen_pair<T>(ka, kb);
+        const double s = scale_of_pair(a, b);
+        a = with_child_transforms(a, s);
+        const Transform<T> x = gen_transform<T>(s);
+        const laws::Verdict v = laws::placed_image(a, x, b);
+        judge(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
+      };
+    case Law::PlacedShape:
+      return [=] {
+        auto [a, b] = gen_pair<T>(ka, ka);
+        const double s = scale_of_pair(a, b);
+        a = with_child_transforms(a, s);
+        const Transform<T> x = gen_transform<T>(s);
+        const Vec2<T> p = gen_point_near(a);
+        const Vec2<T> q(x.apply(widen(p)).template cast<T>());  // near the placed shape, when p is finite
+        const Vec2<T> point = p.allFinite() ? q : p;
+        const Vec2<T> origin(x.apply(inner_point(b)).template cast<T>());
+        const Vec2<T> target(x.apply(inner_point(a)).template cast<T>());
+        const Vec2<T> dir =
+            *rc::gen::inRange(0, 4) != 0 ? Vec2<T>(target - origin) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
+        const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2)});
+        const laws::Verdict v = laws::placed_shape(a, x, point, Ray<T>{origin, dir}, max_t);
+        judge(v, [&] {
+          laws::Case c = placed_case<T>(law, a, x, std::nullopt, std::nullopt, v, test);
+          c.px = point.x();
+          c.py = point.y();
+          c.ox = origin.x();
+          c.oy = origin.y();
+          c.dx = dir.x();
+          c.dy = dir.y();
+          c.max_t = max_t;
+          return c;
+        });
+      };
+    case Law::TransformRejection:
+      return [=] {
+        const std::vector<T> values = gen_transform_values<T>();
+        const laws::Verdict v = laws::transform_rejection<T>(std::span<const T>(values));
+        judge(v, [&] {
+          laws::Case c;
+          c.law = law;
+          c.scalar = std::is_same_v<T, float> ? "float" : "double";
+          c.values.assign(values.begin(), values.end());
+          c.expected = v.expected;
+          c.got = v.got;
+          c.account = v.account;
+          c.source = "property " + test + " " + seed_text();
+          return c;
+        });
+      };
+    default: break;
+  }
+  return {};
 }
 
-/// Every transform law for one scalar: the pairs and kinds from the registry, and the factories.
-template <Scalar T>
-void register_scalar() {
-  for_each_pair([]<ShapeKind A, ShapeKind B>() { register_pair<T>(A, B); });
-  for_each_kind([]<ShapeKind K>() { register_kind<T>(K); });
-  register_rejection<T>();
+/// Every law of the Placed suite, over what it takes (law_tests.hpp); a failure's account is
+/// printed once and its input saved as a case file.
+void register_all() {
+  register_suite(
+      laws::LawSuite::Placed, []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+        return property_of<T>(law, ka, kb, test);
+      },
+      [](const std::function<void()>& property) {
+        g_last.clear();
+        g_case.reset();
+        ::rc::detail::checkGTest(property);
+        if (!g_last.empty()) ADD_FAILURE() << g_last;
+        if (g_case) save_counterexample(*g_case);
+      });
 }
 
 }  // namespace
@@ -189,7 +216,6 @@ void register_scalar() {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  collide::props::register_scalar<float>();
-  collide::props::register_scalar<double>();
+  collide::props::register_all();
   return RUN_ALL_TESTS();
 }

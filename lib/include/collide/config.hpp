@@ -40,6 +40,43 @@ constexpr T max_magnitude() noexcept {
 /// Double's unit roundoff: the largest relative error of one rounded operation.
 inline constexpr Calc kUnitRoundoff = 0x1p-53;
 
+/// Magnitudes above this are far from underflow: their squares and products of two stay normal
+/// doubles, so filters and normalisations may trust their relative error bounds.
+inline constexpr Calc kUnderflowMargin = 0x1p-1000;
+
+/// Magnitudes below this are far from overflow (their squares stay finite).
+inline constexpr Calc kOverflowMargin = 0x1p1000;
+
+/// Vectors whose largest component lies in [kPlainNormLow, kPlainNormHigh] have a norm computed
+/// without scaling (their squared components are normal doubles); others are first scaled by an
+/// exact power of two, so that a direction between points 1e-159 apart keeps its 53 bits.
+inline constexpr Calc kPlainNormLow = 0x1p-500;
+/// See kPlainNormLow.
+inline constexpr Calc kPlainNormHigh = 0x1p500;
+
+/// Floating-point filters (decide.hpp, predicates.hpp) give no answer when the magnitude of their
+/// terms is below this: products of such terms may have underflowed, which relative bounds miss;
+/// the exact fallback decides instead.
+inline constexpr Calc kFilterFloor = 0x1p-900;
+
+/// Absolute error of one rounded product whose result underflows: 32 units of the smallest
+/// subnormal, a wide margin over the half unit a subnormal product can lose.
+inline constexpr Calc kProductUnderflow = 0x1p-1069;
+
+/// Relative slack on a computed error bound before it proves a sign: covers the rounding of the
+/// bound's own sums (a few units of 2^-53) with a wide margin.
+inline constexpr Calc kBoundSlack = 0x1p-40;
+
+/// An OBB whose smaller half extent is below this times its magnitude (centre plus larger half
+/// extent), or below kUnderflowMargin, may have corners that round onto each other: its rounded
+/// corners are checked for convexity before they are trusted as a box.
+inline constexpr Calc kThinBoxRatio = 0x1p-40;
+
+/// Cores (and polygons being validated) whose every value is below this magnitude are scaled up
+/// by an exact power of two before any rounded computation: squares of coordinates below about
+/// 2^-537 underflow, which would leave decisions, depths and distances only absolute-accurate.
+inline constexpr Calc kTinyCore = 0x1p-400;
+
 /// The smallest positive double (a subnormal): the absolute error of one rounded operation whose
 /// result underflows, which relative bounds (kUnitRoundoff) miss.
 inline constexpr Calc kSmallestDouble = 0x1p-1074;

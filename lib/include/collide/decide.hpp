@@ -120,7 +120,7 @@ inline int filtered_sign_dist2(Calc dx, Calc dy, Calc r) noexcept {
   const Calc l = dx * dx + dy * dy, q = r * r;
   const Calc m = l + q, d = l - q;
   if (m > 0x1p-960) [[likely]] {
-    const Calc bound = 0x1p-50 * m;
+    const Calc bound = 8 * kUnitRoundoff * m;
     if (d > bound) return 1;
     if (-d > bound) return -1;
   }
@@ -139,17 +139,17 @@ inline int filtered_point_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b
   const Calc ex = b.x() - a.x(), ey = b.y() - a.y();
   const Calc t = wx * ex + wy * ey, ee = ex * ex + ey * ey;
   const Calc mt = std::fabs(wx * ex) + std::fabs(wy * ey) + ee;
-  if (!(mt > 0x1p-900)) return 2;
-  const Calc tb = 8 * 0x1p-53 * mt;
+  if (!(mt > kFilterFloor)) return 2;
+  const Calc tb = 8 * kUnitRoundoff * mt;
   if (t < -tb) return filtered_sign_dist2(wx, wy, r);                          // nearest: a
   if (t - ee > tb) return filtered_sign_dist2(p.x() - b.x(), p.y() - b.y(), r);  // nearest: b
-  if (t > tb && ee - t > tb && (r == 0 || r * r > 0x1p-1000)) {
+  if (t > tb && ee - t > tb && (r == 0 || r * r > kUnderflowMargin)) {
     const Calc c = ex * wy - ey * wx;
     const Calc mc = std::fabs(ex * wy) + std::fabs(ey * wx);
     const Calc rr = r * r * ee;
     const Calc m = mc * mc + rr;
-    if (m > 0x1p-900) {
-      const Calc q = c * c - rr, qb = 16 * 0x1p-53 * m;
+    if (m > kFilterFloor) {
+      const Calc q = c * c - rr, qb = 16 * kUnitRoundoff * m;
       if (q > qb) return 1;
       if (-q > qb) return -1;
     }
@@ -239,9 +239,9 @@ inline int filtered_obb_obb(const ObbValues& a, const ObbValues& b) noexcept {
     const Calc m = std::fabs(d.x()) * aw + std::fabs(d.y()) * bw + rp +
                    q.hx * (std::fabs(q.u.x()) * aw + std::fabs(q.u.y()) * bw) +
                    q.hy * (std::fabs(vq.x()) * aw + std::fabs(vq.y()) * bw);
-    const Calc bound = 16 * 0x1p-53 * m;
-    if (!(m > 0x1p-900) || !(std::fabs(g) > bound)) unsure = true;
-    return g > bound && m > 0x1p-900;
+    const Calc bound = 16 * kUnitRoundoff * m;
+    if (!(m > kFilterFloor) || !(std::fabs(g) > bound)) unsure = true;
+    return g > bound && m > kFilterFloor;
   };
   if (axis(a, b, a.u, a.hx) || axis(a, b, perp(a.u), a.hy) || axis(b, a, b.u, b.hx) || axis(b, a, perp(b.u), b.hy))
     return -1;

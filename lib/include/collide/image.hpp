@@ -138,7 +138,7 @@ decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
 /// 16 * 2^-53 * (|p|_inf + 2 L) + 2^-1070, where L is the local magnitude (see
 /// transform_tolerance() in compound.hpp for the derivation).
 inline Calc image_tolerance(const Pose& x, Calc local) noexcept {
-  return 16 * kUnitRoundoff * (x.p.cwiseAbs().maxCoeff() + 2 * local) + 0x1p-1070;
+  return 16 * kUnitRoundoff * (x.p.cwiseAbs().maxCoeff() + 2 * local) + 16 * kSmallestDouble;
 }
 
 }  // namespace collide::detail

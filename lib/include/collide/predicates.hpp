@@ -74,7 +74,7 @@ struct Bounded {
   Bounded(double x, double e) noexcept : v(x), err(e) {}
   /// The sign, when the bound proves it; 2 when it does not.
   int certain_sign() const noexcept {
-    const double e = err * (1 + 0x1p-40);
+    const double e = err * (1 + kBoundSlack);
     if (v > e) return 1;
     if (-v > e) return -1;
     return 2;
@@ -82,16 +82,16 @@ struct Bounded {
 };
 inline Bounded operator+(const Bounded& a, const Bounded& b) noexcept {
   const double s = a.v + b.v;
-  return {s, a.err + b.err + std::fabs(s) * 0x1p-53};
+  return {s, a.err + b.err + std::fabs(s) * kUnitRoundoff};
 }
 inline Bounded operator-(const Bounded& a, const Bounded& b) noexcept {
   const double s = a.v - b.v;
-  return {s, a.err + b.err + std::fabs(s) * 0x1p-53};
+  return {s, a.err + b.err + std::fabs(s) * kUnitRoundoff};
 }
 inline Bounded operator-(const Bounded& a) noexcept { return {-a.v, a.err}; }
 inline Bounded operator*(const Bounded& a, const Bounded& b) noexcept {
   const double p = a.v * b.v;
-  return {p, std::fabs(a.v) * b.err + std::fabs(b.v) * a.err + a.err * b.err + std::fabs(p) * 0x1p-53 + 0x1p-1069};
+  return {p, std::fabs(a.v) * b.err + std::fabs(b.v) * a.err + a.err * b.err + std::fabs(p) * kUnitRoundoff + kProductUnderflow};
 }
 
 /// An exact binary number sign * mag * 2^exp of up to kLimbs 32-bit limbs: enough for every
@@ -277,7 +277,7 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
   const double r = (b.y() - a.y()) * (c.x() - a.x());
   const double det = l - r;
   const double mag = std::fabs(l) + std::fabs(r);
-  if (mag > 0x1p-900) {
+  if (mag > kFilterFloor) {
     const double bound = 3.3306690738754716e-16 * mag;
     if (det > bound) return 1;
     if (-det > bound) return -1;

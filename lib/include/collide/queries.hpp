@@ -125,7 +125,7 @@ Calc placement_tolerance(const S& s) noexcept {
 template <AnyShape A, AnyShape B>
 Calc rounding_tolerance(const A& a, const B& b) {
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
-  return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor + placement_tolerance(a) + placement_tolerance(b);
+  return kOverlapErrorFactor * kUnitRoundoff * s + kAbsoluteFloor + placement_tolerance(a) + placement_tolerance(b);
 }
 
 /// The error bound of overlaps() for this pair: the width of the band of exact signed distance
@@ -360,8 +360,8 @@ namespace detail {
 /// stored values (what is rounded to T when it moves).
 template <Scalar T>
 Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
-  return 4 * kOverlapErrorFactor * 0x1p-53 * s_pair + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) +
-         16 * 0x1p-1074 + 2 * Calc(std::numeric_limits<T>::denorm_min());
+  return 4 * kOverlapErrorFactor * kUnitRoundoff * s_pair + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) +
+         16 * kSmallestDouble + 2 * Calc(std::numeric_limits<T>::denorm_min());
 }
 
 }  // namespace detail

@@ -343,7 +343,7 @@ class ConvexPolygon {
       // Tiny polygons are scaled up by 2^600 (exact) so that the cross products do not underflow.
       Calc m = 0;
       for (std::size_t k = 0; k < idx.size(); ++k) m = std::max(m, at(k).cwiseAbs().maxCoeff());
-      const int sc = m < 0x1p-400 ? 600 : 0;
+      const int sc = m < kTinyCore ? 600 : 0;
       const Vec2c o = at(0);
       auto rel = [&](std::size_t k) {
         const Vec2c d = at(k) - o;

@@ -116,7 +116,7 @@ template <AnyShape A, AnyShape B>
 Calc rounding_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
                         const Transform<scalar_of_t<A>>& xb) {
   const Calc s = std::max(detail::box_scale(bounds(a, xa)), detail::box_scale(bounds(b, xb)));
-  return kOverlapErrorFactor * 0x1p-53 * s + kAbsoluteFloor + overlap_tolerance(a, xa, b, xb);
+  return kOverlapErrorFactor * kUnitRoundoff * s + kAbsoluteFloor + overlap_tolerance(a, xa, b, xb);
 }
 
 /// Conservative world bounding box of s placed by x: it contains the exact image (the computed

@@ -46,9 +46,10 @@ void require_finite(const Vec2d& v, const char* what) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Exact input data of one primitive (doubles only; the rational vertices are made per pass).
+// CoreInput: the exact input data of one primitive, its convex core and radius (doubles only; the
+// rational vertices are made per pass).
 
-struct Spec {
+struct CoreInput {
   bool is_obb = false;
   boost::container::small_vector<Vec2d, 8> points;  // 1 point, 2 segment, >= 3 CCW convex polygon
   Vec2d center{0, 0}, axis{1, 0};                   // OBB: corners center +- hx*u +- hy*v
@@ -64,19 +65,19 @@ void require_pose(const Vec2d& p, const Vec2d& q) {
   require_finite(q, "transform rotation");
 }
 
-Spec spec_of(const Circle<double>& s) {
+CoreInput core_input_of(const Circle<double>& s) {
   require_finite(s.center(), "circle center");
   require_finite(s.radius(), "circle radius");
-  Spec out;
+  CoreInput out;
   out.points.push_back(s.center());
   out.radius = s.radius();
   return out;
 }
-Spec spec_of(const Aabb<double>& s) {
+CoreInput core_input_of(const Aabb<double>& s) {
   require_finite(s.min(), "AABB min");
   require_finite(s.max(), "AABB max");
   const Vec2d lo = s.min(), hi = s.max();
-  Spec out;
+  CoreInput out;
   const bool flat_x = lo.x() == hi.x(), flat_y = lo.y() == hi.y();
   if (flat_x && flat_y) {
     out.points.push_back(lo);
@@ -88,11 +89,11 @@ Spec spec_of(const Aabb<double>& s) {
   }
   return out;
 }
-Spec spec_of(const Obb<double>& s) {
+CoreInput core_input_of(const Obb<double>& s) {
   require_finite(s.center(), "OBB center");
   require_finite(s.half_extents(), "OBB half extents");
   require_finite(s.axis(), "OBB axis");
-  Spec out;
+  CoreInput out;
   out.is_obb = true;
   out.center = s.center();
   out.axis = s.axis();
@@ -100,35 +101,35 @@ Spec spec_of(const Obb<double>& s) {
   out.hy = s.half_extents().y();
   return out;
 }
-Spec spec_of(const Capsule<double>& s) {
+CoreInput core_input_of(const Capsule<double>& s) {
   require_finite(s.a(), "capsule end");
   require_finite(s.b(), "capsule end");
   require_finite(s.radius(), "capsule radius");
-  Spec out;
+  CoreInput out;
   out.points.push_back(s.a());
   if (s.b() != s.a()) out.points.push_back(s.b());
   out.radius = s.radius();
   return out;
 }
-Spec spec_of(const ConvexPolygon<double>& s) {
-  Spec out;
+CoreInput core_input_of(const ConvexPolygon<double>& s) {
+  CoreInput out;
   for (const Vec2d& p : s.vertices()) {
     require_finite(p, "polygon vertex");
     out.points.push_back(p);
   }
   return out;
 }
-Spec spec_of(const Primitive<double>& s) {
-  return std::visit([](const auto& x) { return spec_of(x); }, s);
+CoreInput core_input_of(const Primitive<double>& s) {
+  return std::visit([](const auto& x) { return core_input_of(x); }, s);
 }
-Spec point_spec(const Vec2d& p) {
+CoreInput point_spec(const Vec2d& p) {
   require_finite(p, "point");
-  Spec out;
+  CoreInput out;
   out.points.push_back(p);
   return out;
 }
-Spec segment_spec(const Vec2d& p, const Vec2d& q) {
-  Spec out = point_spec(p);
+CoreInput segment_spec(const Vec2d& p, const Vec2d& q) {
+  CoreInput out = point_spec(p);
   require_finite(q, "point");
   if (q != p) out.points.push_back(q);
   return out;
@@ -136,7 +137,7 @@ Spec segment_spec(const Vec2d& p, const Vec2d& q) {
 
 /// The primitives of a shape: itself, or a compound's children.
 struct Parts {
-  boost::container::small_vector<Spec, 1> items;
+  boost::container::small_vector<CoreInput, 1> items;
   bool compound = false;
 };
 
@@ -151,18 +152,18 @@ Parts parts_of(const Placed& s) {
         if constexpr (std::is_same_v<S, Compound<double>>) {
           out.compound = true;
           for (std::size_t i = 0; i < x.children().size(); ++i) {
-            Spec c = spec_of(x.children()[i]);
+            CoreInput c = core_input_of(x.children()[i]);
             const Transform<double> t = x.child_transform(i);
             if (!t.is_identity()) c.poses.emplace_back(t.position(), t.rotation());
             out.items.push_back(std::move(c));
           }
         } else {
-          out.items.push_back(spec_of(x));
+          out.items.push_back(core_input_of(x));
         }
       },
       s.shape);
   if (body) {
-    for (Spec& c : out.items) c.poses.emplace_back(s.position, s.rotation);
+    for (CoreInput& c : out.items) c.poses.emplace_back(s.position, s.rotation);
   }
   return out;
 }
@@ -210,12 +211,12 @@ P<NT> point_of(const Vec2d& p, const P<NT>* shift) {
   return {NT(p.x()), NT(p.y())};
 }
 
-/// The spec's rational vertices, placed by its poses (exact), then moved by *shift when given.
+/// The input's rational vertices, placed by its poses (exact), then moved by *shift when given.
 template <class NT>
-Core<NT> realize_local(const Spec& s, const P<NT>* shift);
+Core<NT> realize_local(const CoreInput& s, const P<NT>* shift);
 
 template <class NT>
-Core<NT> realize(const Spec& s, const P<NT>* shift = nullptr) {
+Core<NT> realize(const CoreInput& s, const P<NT>* shift = nullptr) {
   if (s.poses.empty()) return realize_local<NT>(s, shift);
   Core<NT> c = realize_local<NT>(s, nullptr);
   for (const auto& [p, q] : s.poses) {
@@ -229,7 +230,7 @@ Core<NT> realize(const Spec& s, const P<NT>* shift = nullptr) {
 }
 
 template <class NT>
-Core<NT> realize_local(const Spec& s, const P<NT>* shift) {
+Core<NT> realize_local(const CoreInput& s, const P<NT>* shift) {
   Core<NT> c;
   c.radius = NT(s.radius);
   if (!s.is_obb) {
@@ -310,8 +311,8 @@ void for_each_candidate_normal(const Core<NT>& p, const Core<NT>& q, F&& f) {
 /// A primitive's core in intervals (always) and exactly (on demand), optionally moved by shift.
 class DualCore {
  public:
-  explicit DualCore(const Spec& s, const Vec2d* shift = nullptr)
-      : spec_(&s), shift_(shift), interval_(make<Interval>()) {}
+  explicit DualCore(const CoreInput& s, const Vec2d* shift = nullptr)
+      : input_(&s), shift_(shift), interval_(make<Interval>()) {}
   template <class NT>
   const Core<NT>& get() const {
     if constexpr (std::is_same_v<NT, Interval>) {
@@ -323,7 +324,7 @@ class DualCore {
   }
   std::size_t size() const { return interval_.v.size(); }
   std::size_t edge_count() const { return interval_.edge_count(); }
-  double radius() const { return spec_->radius; }
+  double radius() const { return input_->radius; }
 
   /// True when boxes enclosing the two cores grown by their radii (pad = 1) or not (pad = 0)
   /// are disjoint: then the shapes certainly do not meet. Bounds come from the intervals.
@@ -341,9 +342,9 @@ class DualCore {
  private:
   template <class NT>
   Core<NT> make() const {
-    if (!shift_) return realize<NT>(*spec_);
+    if (!shift_) return realize<NT>(*input_);
     const P<NT> t{NT(shift_->x()), NT(shift_->y())};
-    return realize<NT>(*spec_, &t);
+    return realize<NT>(*input_, &t);
   }
   /// Box enclosing the core grown by r (upward rounding is in force: the sums round outward
   /// by computing the lower bound as -(-lo + r)).
@@ -363,7 +364,7 @@ class DualCore {
       hi[k] = hi[k] + r;
     }
   }
-  const Spec* spec_;
+  const CoreInput* input_;
   const Vec2d* shift_;
   Core<Interval> interval_;
   mutable std::optional<Core<Exact>> exact_;
@@ -597,14 +598,14 @@ int sign_inner_depth_minus(const DualCore& p, const DualCore& q, const X& x) {
 
 using Upward = CGAL::Protect_FPU_rounding<true>;
 
-bool prim_overlaps(const Spec& a, const Spec& b, const Vec2d* shift_a = nullptr) {
+bool prim_overlaps(const CoreInput& a, const CoreInput& b, const Vec2d* shift_a = nullptr) {
   Upward upward;
   const DualCore ca(a, shift_a), cb(b);
   return dilated_meet(ca, cb);
 }
 
 /// sign(gap(a, b) - d).
-int prim_compare_distance(const Spec& a, const Spec& b, double d) {
+int prim_compare_distance(const CoreInput& a, const CoreInput& b, double d) {
   Upward upward;
   const DualCore ca(a), cb(b);
   const double ra = a.radius, rb = b.radius;
@@ -623,7 +624,7 @@ int prim_compare_distance(const Spec& a, const Spec& b, double d) {
 
 /// sign(depth(a, b) - len). See the header for the definition of depth. With D = Qb - Pa (cores):
 /// depth = dist(0, boundary of D) + r when the cores meet, else max(0, r - dist(Pa, Pb)).
-int prim_compare_depth(const Spec& a, const Spec& b, double len) {
+int prim_compare_depth(const CoreInput& a, const CoreInput& b, double len) {
   Upward upward;
   const DualCore ca(a), cb(b);
   const double ra = a.radius, rb = b.radius;
@@ -649,9 +650,9 @@ int prim_compare_depth(const Spec& a, const Spec& b, double len) {
 }
 
 /// sign(distance from p to the boundary of the dilated core - d).
-int prim_compare_boundary(const Spec& s, const Vec2d& p, double d) {
+int prim_compare_boundary(const CoreInput& s, const Vec2d& p, double d) {
   Upward upward;
-  const Spec ps = point_spec(p);
+  const CoreInput ps = point_spec(p);
   const DualCore c(s), pt(ps);
   const double r = s.radius;
   if (sign_dist2_minus(pt, c, squared(constant(r))) > 0) {  // outside: dist(p, core) - r
@@ -679,7 +680,7 @@ int prim_compare_boundary(const Spec& s, const Vec2d& p, double d) {
   return -sign_dist2_minus(pt, c, squared(y));
 }
 
-bool prim_inside_box(const Spec& s, const Aabb<double>& box) {
+bool prim_inside_box(const CoreInput& s, const Aabb<double>& box) {
   Upward upward;
   const DualCore c(s);
   const double r = s.radius;
@@ -727,7 +728,7 @@ Rational core_dist2(const Core<Rational>& p, const Core<Rational>& q, bool meet)
 }
 
 /// Signed distance of two primitives, computed exactly then rounded (reports only).
-double prim_signed_distance(const Spec& a, const Spec& b) {
+double prim_signed_distance(const CoreInput& a, const CoreInput& b) {
   bool meet = false;
   {
     Upward upward;
@@ -754,8 +755,8 @@ double prim_signed_distance(const Spec& a, const Spec& b) {
 /// Calls f(child of a, child of b) for every pair; stops when f returns true.
 template <class F>
 bool any_pair(const Parts& a, const Parts& b, F&& f) {
-  for (const Spec& x : a.items) {
-    for (const Spec& y : b.items) {
+  for (const CoreInput& x : a.items) {
+    for (const CoreInput& y : b.items) {
       if (f(x, y)) return true;
     }
   }
@@ -771,13 +772,13 @@ namespace exact {
 
 bool overlaps(const Placed& a, const Placed& b) {
   const Parts pa = parts_of(a), pb = parts_of(b);
-  return any_pair(pa, pb, [](const Spec& x, const Spec& y) { return prim_overlaps(x, y); });
+  return any_pair(pa, pb, [](const CoreInput& x, const CoreInput& y) { return prim_overlaps(x, y); });
 }
 
 bool contains(const Placed& s, const Vec2<double>& p) {
   const Parts ps = parts_of(s);
-  const Spec pt = point_spec(p);
-  for (const Spec& x : ps.items) {
+  const CoreInput pt = point_spec(p);
+  for (const CoreInput& x : ps.items) {
     if (prim_overlaps(pt, x)) return true;
   }
   return false;
@@ -787,7 +788,7 @@ int compare_distance(const Placed& a, const Placed& b, double d) {
   require_finite(d, "distance");
   const Parts pa = parts_of(a), pb = parts_of(b);
   int best = 1;  // sign(min gap - d) = min over child pairs of sign(gap - d)
-  any_pair(pa, pb, [&](const Spec& x, const Spec& y) {
+  any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) {
     best = std::min(best, prim_compare_distance(x, y, d));
     return best == -1;
   });
@@ -797,11 +798,11 @@ int compare_distance(const Placed& a, const Placed& b, double d) {
 bool within_band(const Placed& a, const Placed& b, double band) {
   require_finite(band, "band");
   const Parts pa = parts_of(a), pb = parts_of(b);
-  const bool any_overlap = any_pair(pa, pb, [](const Spec& x, const Spec& y) { return prim_overlaps(x, y); });
+  const bool any_overlap = any_pair(pa, pb, [](const CoreInput& x, const CoreInput& y) { return prim_overlaps(x, y); });
   if (!any_overlap) {
-    return any_pair(pa, pb, [&](const Spec& x, const Spec& y) { return prim_compare_distance(x, y, band) <= 0; });
+    return any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) { return prim_compare_distance(x, y, band) <= 0; });
   }
-  const bool deep = any_pair(pa, pb, [&](const Spec& x, const Spec& y) {
+  const bool deep = any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) {
     return prim_overlaps(x, y) && prim_compare_depth(x, y, band) > 0;
   });
   return !deep;
@@ -810,7 +811,7 @@ bool within_band(const Placed& a, const Placed& b, double band) {
 bool separates(const Placed& a, const Placed& b, const Vec2<double>& t) {
   require_finite(t, "translation");
   const Parts pa = parts_of(a), pb = parts_of(b);
-  return !any_pair(pa, pb, [&](const Spec& x, const Spec& y) { return prim_overlaps(x, y, &t); });
+  return !any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) { return prim_overlaps(x, y, &t); });
 }
 
 int compare_depth(const Placed& a, const Placed& b, double len) {
@@ -824,7 +825,7 @@ bool inside_box(const Placed& s, const Aabb<double>& box) {
   require_finite(box.min(), "box min");
   require_finite(box.max(), "box max");
   const Parts ps = parts_of(s);
-  for (const Spec& x : ps.items) {
+  for (const CoreInput& x : ps.items) {
     if (!prim_inside_box(x, box)) return false;
   }
   return true;
@@ -835,9 +836,9 @@ int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d) 
   require_finite(d, "distance");
   const Parts ps = parts_of(s);
   if (!ps.compound) return prim_compare_boundary(ps.items[0], p, d);
-  const Spec pt = point_spec(p);
+  const CoreInput pt = point_spec(p);
   int best = 1;  // outside every child: distance to the union = min over children
-  for (const Spec& x : ps.items) {
+  for (const CoreInput& x : ps.items) {
     if (prim_overlaps(pt, x))
       throw Unsupported("oracle: boundary distance of a point inside a compound is not defined");
     best = std::min(best, prim_compare_boundary(x, p, d));
@@ -846,9 +847,9 @@ int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d) 
 }
 
 bool segment_meets(const Placed& s, const Vec2<double>& p, const Vec2<double>& q) {
-  const Spec seg = segment_spec(p, q);
+  const CoreInput seg = segment_spec(p, q);
   const Parts ps = parts_of(s);
-  for (const Spec& x : ps.items) {
+  for (const CoreInput& x : ps.items) {
     if (prim_overlaps(seg, x)) return true;
   }
   return false;
@@ -859,7 +860,7 @@ double approx_signed_distance(const Placed& a, const Placed& b) {
   if (!pa.compound && !pb.compound) return prim_signed_distance(pa.items[0], pb.items[0]);
   bool hit = false;
   double gap = std::numeric_limits<double>::infinity();
-  any_pair(pa, pb, [&](const Spec& x, const Spec& y) {
+  any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) {
     if (prim_overlaps(x, y)) hit = true;
     else gap = std::min(gap, prim_signed_distance(x, y));
     return hit;

@@ -53,6 +53,19 @@ double parse_double(const std::string& tok, int line) {
   return at_line(line, [&] { return parse_value(tok); });
 }
 
+/// The next value of a line, or CaseError naming the line's expected form.
+double next_value(std::istream& in, int line, const char* form) {
+  std::string tok;
+  if (!(in >> tok)) throw CaseError("line " + std::to_string(line) + ": expected '" + form + "'");
+  return parse_double(tok, line);
+}
+
+/// The next word of a line, which must be `word`.
+void expect_word(std::istream& in, const char* word, int line, const char* form) {
+  std::string tok;
+  if (!(in >> tok) || tok != word) throw CaseError("line " + std::to_string(line) + ": expected '" + form + "'");
+}
+
 std::string rest_of(std::istringstream& in) {
   std::string rest;
   std::getline(in, rest);
@@ -69,7 +82,7 @@ void write_case(std::ostream& out, const Case& c) {
   out << "scalar " << c.scalar << '\n';
   if (info(law).inputs == LawInputs::Values) {
     out << "kind " << name(c.a.kind) << '\n';
-  } else {
+  } else if (info(law).inputs != LawInputs::TransformValues) {
     write_shape_comment(out, "a", c.a);
     write_text(out, "shape a", c.a);
   }
@@ -79,18 +92,31 @@ void write_case(std::ostream& out, const Case& c) {
     write_text(out, "shape b", *c.b);
   }
   if (c.transform_b) write_text(out, "transform b", *c.transform_b);
-  if (law == Law::Translation)
+  if (law == Law::Translation || law == Law::CastTranslation)
     out << "# t = (" << detail::num(c.tx) << ", " << detail::num(c.ty) << ")\ntranslation " << hex(c.tx) << ' '
         << hex(c.ty) << '\n';
   if (law == Law::Rotation) out << "rotation " << c.quarter_turns << " mirror " << (c.mirror ? 1 : 0) << '\n';
-  if (law == Law::Raycast)
+  if (law == Law::Raycast || law == Law::PlacedShape || law == Law::CastRaycast)
     out << "# ray (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ") + t (" << detail::num(c.dx) << ", "
         << detail::num(c.dy) << "), t <= " << detail::num(c.max_t) << "\nray " << hex(c.ox) << ' ' << hex(c.oy)
         << ' ' << hex(c.dx) << ' ' << hex(c.dy) << " max_t " << hex(c.max_t) << '\n';
-  if (law == Law::Contains)
-    out << "# point (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ")\npoint " << hex(c.ox) << ' ' << hex(c.oy)
+  if (law == Law::Contains || law == Law::PlacedShape)
+    out << "# point (" << detail::num(c.px) << ", " << detail::num(c.py) << ")\npoint " << hex(c.px) << ' ' << hex(c.py)
         << '\n';
-  if (info(law).inputs == LawInputs::Values) {
+  if (info(law).suite == LawSuite::Moving && law != Law::CastRaycast && law != Law::Toi)
+    out << "# a moves at (" << detail::num(c.vax) << ", " << detail::num(c.vay) << "), b at (" << detail::num(c.vbx)
+        << ", " << detail::num(c.vby) << "), t <= " << detail::num(c.max_t) << "\nmotion " << hex(c.vax) << ' '
+        << hex(c.vay) << ' ' << hex(c.vbx) << ' ' << hex(c.vby) << " max_t " << hex(c.max_t) << '\n';
+  if (law == Law::Toi) {
+    for (const auto& [which, sweep] : {std::pair{"a", &c.sweep_a}, std::pair{"b", &c.sweep_b}}) {
+      if (!*sweep) continue;
+      out << "sweep " << which;
+      for (double v : **sweep) out << ' ' << hex(v);
+      out << '\n';
+    }
+    out << "max_t " << hex(c.max_t) << '\n';
+  }
+  if (info(law).inputs == LawInputs::Values || info(law).inputs == LawInputs::TransformValues) {
     out << "values";
     for (double v : c.values) out << ' ' << hex(v);
     out << '\n';
@@ -164,28 +190,37 @@ Case read_case(std::istream& in) {
       open_compound->children.push_back(at_line(line, [&] { return read_text(ls, parse_kind(kind)); }));
       --children_left;
     } else if (key == "translation") {
-      std::string x, y;
-      ls >> x >> y;
-      c.tx = parse_double(x, line);
-      c.ty = parse_double(y, line);
+      constexpr const char* form = "translation X Y";
+      c.tx = next_value(ls, line, form);
+      c.ty = next_value(ls, line, form);
     } else if (key == "rotation") {
       std::string m;
       int mirror = 0;
       if (!(ls >> c.quarter_turns >> m >> mirror) || m != "mirror") throw CaseError(where() + "expected 'rotation K mirror 0|1'");
       c.mirror = mirror != 0;
     } else if (key == "ray") {
-      std::string t[4], kw, mt;
-      if (!(ls >> t[0] >> t[1] >> t[2] >> t[3] >> kw >> mt) || kw != "max_t") throw CaseError(where() + "expected 'ray ox oy dx dy max_t T'");
-      c.ox = parse_double(t[0], line);
-      c.oy = parse_double(t[1], line);
-      c.dx = parse_double(t[2], line);
-      c.dy = parse_double(t[3], line);
-      c.max_t = parse_double(mt, line);
+      constexpr const char* form = "ray ox oy dx dy max_t T";
+      for (double* v : {&c.ox, &c.oy, &c.dx, &c.dy}) *v = next_value(ls, line, form);
+      expect_word(ls, "max_t", line, form);
+      c.max_t = next_value(ls, line, form);
     } else if (key == "point") {
-      std::string x, y;
-      if (!(ls >> x >> y)) throw CaseError(where() + "expected 'point X Y'");
-      c.ox = parse_double(x, line);
-      c.oy = parse_double(y, line);
+      constexpr const char* form = "point X Y";
+      c.px = next_value(ls, line, form);
+      c.py = next_value(ls, line, form);
+    } else if (key == "motion") {
+      constexpr const char* form = "motion vax vay vbx vby max_t T";
+      for (double* v : {&c.vax, &c.vay, &c.vbx, &c.vby}) *v = next_value(ls, line, form);
+      expect_word(ls, "max_t", line, form);
+      c.max_t = next_value(ls, line, form);
+    } else if (key == "sweep") {
+      constexpr const char* form = "sweep a|b lx ly c0x c0y c1x c1y a0 a1";
+      std::string which;
+      if (!(ls >> which) || (which != "a" && which != "b")) throw CaseError(where() + "expected '" + form + "'");
+      std::array<double, 8> v{};
+      for (double& x : v) x = next_value(ls, line, form);
+      (which == "a" ? c.sweep_a : c.sweep_b) = v;
+    } else if (key == "max_t") {
+      c.max_t = next_value(ls, line, "max_t T");
     } else if (key == "values") {
       std::string tok;
       while (ls >> tok) c.values.push_back(parse_double(tok, line));
@@ -204,7 +239,7 @@ Case read_case(std::istream& in) {
   if (!header) throw CaseError("empty case file");
   if (children_left > 0) throw CaseError("compound is missing " + std::to_string(children_left) + " children");
   if (!have_law) throw CaseError("no law");
-  if (!have_a) throw CaseError("no shape a");
+  if (!have_a && info(c.law).inputs != LawInputs::TransformValues) throw CaseError("no shape a");
   return c;
 }
 
@@ -226,6 +261,7 @@ Case read_case(const std::filesystem::path& path) {
 }
 
 std::string pair_name(const Case& c) {
+  if (info(c.law).inputs == LawInputs::TransformValues) return "transform";
   if (!c.b) return std::string(name(c.a.kind));
   return name(make_pair(c.a.kind, c.b->kind));
 }
@@ -260,41 +296,83 @@ std::filesystem::path save_case(const std::filesystem::path& dir, const Case& c)
 namespace {
 
 template <Scalar T>
+Vec2<T> vec(double x, double y) {
+  using codec_detail::narrow;
+  return Vec2<T>(narrow<T>(x), narrow<T>(y));
+}
+
+template <Scalar T>
+Sweep<T> sweep_of(const std::optional<std::array<double, 8>>& v) {
+  using codec_detail::narrow;
+  if (!v) return Sweep<T>{};
+  const std::array<double, 8>& x = *v;
+  return Sweep<T>{vec<T>(x[0], x[1]), vec<T>(x[2], x[3]), vec<T>(x[4], x[5]), narrow<T>(x[6]), narrow<T>(x[7])};
+}
+
+template <Scalar T>
 Verdict replay_as(const Case& c) {
   const Law law = c.law;
-  if (c.transform_a || c.transform_b)
+  if (info(law).suite != LawSuite::Placed && (c.transform_a || c.transform_b))
     throw CaseError("law '" + std::string(name(law)) + "' takes no transform");
   auto shape_a = [&] { return from_data<T>(c.a); };
   auto shape_b = [&]() -> Shape<T> {
     if (!c.b) throw CaseError("law '" + std::string(name(law)) + "' needs shape b");
     return from_data<T>(*c.b);
   };
+  auto placement = [](const std::optional<TransformData>& x) {
+    return x ? transform_from_data<T>(*x) : Transform<T>();
+  };
+  const Transform<T> xa = placement(c.transform_a), xb = placement(c.transform_b);
+  auto values = [&] {
+    std::vector<T> x;
+    for (double v : c.values) x.push_back(static_cast<T>(v));
+    return x;
+  };
   using codec_detail::narrow;
+  const Ray<T> ray{vec<T>(c.ox, c.oy), vec<T>(c.dx, c.dy)};
+  const Vec2<T> point = vec<T>(c.px, c.py), move = vec<T>(c.tx, c.ty);
+  const CastInput<T> motion{vec<T>(c.vax, c.vay), vec<T>(c.vbx, c.vby), narrow<T>(c.max_t)};
   switch (law) {
     case Law::Agreement: return agreement(shape_a(), shape_b());
     case Law::Symmetry: return symmetry(shape_a(), shape_b());
-    case Law::Translation: return translation(shape_a(), shape_b(), Vec2<T>(narrow<T>(c.tx), narrow<T>(c.ty)));
+    case Law::Translation: return translation(shape_a(), shape_b(), move);
     case Law::Rotation: return rotation(shape_a(), shape_b(), c.quarter_turns, c.mirror);
     case Law::Resolution: return resolution(shape_a(), shape_b());
     case Law::Bounds: return bounds_law(shape_a());
-    case Law::Raycast:
-      return raycast_law(shape_a(), Ray<T>{Vec2<T>(narrow<T>(c.ox), narrow<T>(c.oy)), Vec2<T>(narrow<T>(c.dx), narrow<T>(c.dy))},
-                         narrow<T>(c.max_t));
+    case Law::Raycast: return raycast_law(shape_a(), ray, narrow<T>(c.max_t));
     case Law::Hierarchy: return hierarchy(shape_a(), shape_b());
     case Law::Representation: return representation(shape_a(), shape_b());
     case Law::Contact: return contact_law(shape_a(), shape_b());
     case Law::Distance: return distance_law(shape_a(), shape_b());
     case Law::Rejection: {
-      std::vector<T> x;
-      for (double v : c.values) x.push_back(static_cast<T>(v));
+      const std::vector<T> x = values();
       return rejection<T>(c.a.kind, std::span<const T>(x));
     }
-    case Law::Contains: return contains_law(shape_a(), Vec2<T>(narrow<T>(c.ox), narrow<T>(c.oy)));
+    case Law::Contains: return contains_law(shape_a(), point);
     case Law::Touching: return touching(shape_a(), shape_b());
     case Law::Scene: return scene(shape_a());
     case Law::Separation: return manifold_separation(shape_a(), shape_b());
     case Law::FeatureIds: return manifold_ids(shape_a(), shape_b());
     case Law::Speculative: return manifold_speculative(shape_a(), shape_b());
+    case Law::PlacedAgreement: return placed_agreement(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedOutputs: return placed_outputs(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedResolution: return placed_resolution(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedShape: return placed_shape(shape_a(), xa, point, ray, narrow<T>(c.max_t));
+    case Law::PlacedCovariance:
+      if (c.transform_b) throw CaseError("law 'placed_covariance' moves both shapes by transform a only");
+      return placed_covariance(shape_a(), shape_b(), xa);
+    case Law::PlacedImage: return placed_image(shape_a(), xa, shape_b());
+    case Law::TransformRejection: {
+      const std::vector<T> x = values();
+      return transform_rejection<T>(std::span<const T>(x));
+    }
+    case Law::Cast: return cast_law(shape_a(), shape_b(), motion);
+    case Law::CastSymmetry: return cast_symmetry(shape_a(), shape_b(), motion);
+    case Law::CastTranslation: return cast_translation(shape_a(), shape_b(), motion, move);
+    case Law::CastRaycast: return cast_raycast(shape_a(), ray, narrow<T>(c.max_t));
+    case Law::Toi:
+      return toi_law(shape_a(), sweep_of<T>(c.sweep_a), shape_b(), sweep_of<T>(c.sweep_b), narrow<T>(c.max_t),
+                     std::span<const double>(kToiSamples));
   }
   throw CaseError("unknown law");
 }

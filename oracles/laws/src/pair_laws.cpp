@@ -202,7 +202,7 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     if (!got) {
       v.account = "no overlap reported, push " + vec(push);
       if (push != Vec2<T>::Zero()) fail(v, "zero push when overlaps() is false", "push " + vec(push), pair_text(a, b));
-      // An exact overlap the library missed is allowed only within the band (as in law 1).
+      // An exact overlap the library missed is allowed only within the band (as in law agreement).
       if (oracle::overlaps(a, b)) {
         v.disagreement = true;
         const double tol = overlap_tolerance(a, b);

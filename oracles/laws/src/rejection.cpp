@@ -1,4 +1,4 @@
-// Law 9: every invalid input is rejected with its named error; valid input gives a shape.
+// Law rejection: every invalid input is rejected with its named error; valid input gives a shape.
 
 #include "collide/laws/codec.hpp"
 #include "support.hpp"

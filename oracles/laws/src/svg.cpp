@@ -210,8 +210,15 @@ void draw(std::ostream& out, const Case& c) {
   std::optional<std::pair<Vec2c, Vec2c>> push;
   std::optional<Vec2c> point;
   try {
-    if (info(c.law).inputs != LawInputs::Values) a = from_data<T>(c.a);
-    if (c.b && info(c.law).inputs != LawInputs::Values) b = from_data<T>(*c.b);
+    const bool shapes = info(c.law).inputs != LawInputs::Values && info(c.law).inputs != LawInputs::TransformValues;
+    if (shapes) a = from_data<T>(c.a);
+    if (c.b && shapes) b = from_data<T>(*c.b);
+    for (const auto& [which, x] : {std::pair{"a", &c.transform_a}, std::pair{"b", &c.transform_b}}) {
+      if (*x)
+        notes.push_back(std::string(which) + " placed by p (" + detail::num((*x)->values[0]) + ", " +
+                        detail::num((*x)->values[1]) + "), q (" + detail::num((*x)->values[2]) + ", " +
+                        detail::num((*x)->values[3]) + "); drawn in its own frame");
+    }
     if (a) grow(v, first, bounds(*a));
     if (b) grow(v, first, bounds(*b));
     if (a && b && c.law == Law::Resolution) {
@@ -237,7 +244,27 @@ void draw(std::ostream& out, const Case& c) {
       }
       notes.push_back("moved pair dashed green, t = (" + detail::num(c.tx) + ", " + detail::num(c.ty) + ")");
     }
-    if (c.law == Law::Raycast) {
+    if (a && b && info(c.law).suite == LawSuite::Moving && c.law != Law::Toi && c.law != Law::CastRaycast) {
+      // The swept path: a's motion as an arrow, both shapes at the cast's time dashed green.
+      const Vec2<T> va(static_cast<T>(c.vax), static_cast<T>(c.vay)), vb(static_cast<T>(c.vbx), static_cast<T>(c.vby));
+      const CastResult<T> r = shape_cast(*a, va, *b, vb, static_cast<T>(c.max_t));
+      const T t = r.outcome == CastOutcome::Miss ? static_cast<T>(c.max_t) : r.t;
+      const auto ma = translated(*a, Vec2<T>(va * t)), mb = translated(*b, Vec2<T>(vb * t));
+      if (ma && mb) {
+        a2 = ma.value();
+        b2 = mb.value();
+        grow(v, first, bounds(*a2));
+        grow(v, first, bounds(*b2));
+      }
+      const Aabb<T> box = bounds(*a);
+      const Vec2c mid = (widen(box.min()) + widen(box.max())) / 2;
+      push = std::pair{mid, Vec2c(mid + widen(va) * c.max_t)};
+      notes.push_back("a moves at (" + detail::num(c.vax) + ", " + detail::num(c.vay) + "), b at (" +
+                      detail::num(c.vbx) + ", " + detail::num(c.vby) + "); shape_cast: " +
+                      std::string(r.outcome == CastOutcome::Hit ? "hit" : r.outcome == CastOutcome::Miss ? "miss" : "no answer") +
+                      " at t = " + detail::num(t) + ", both drawn there dashed green");
+    }
+    if (c.law == Law::Raycast || c.law == Law::PlacedShape || c.law == Law::CastRaycast) {
       const Vec2c o(c.ox, c.oy), e = o + Vec2c(c.dx, c.dy) * c.max_t;
       grow(v, first, o.x(), o.y(), o.x(), o.y());
       grow(v, first, e.x(), e.y(), e.x(), e.y());
@@ -245,10 +272,10 @@ void draw(std::ostream& out, const Case& c) {
       notes.push_back("ray (" + detail::num(c.ox) + ", " + detail::num(c.oy) + ") + t (" + detail::num(c.dx) + ", " +
                       detail::num(c.dy) + "), arrow to max_t " + detail::num(c.max_t));
     }
-    if (c.law == Law::Contains) {
-      point = Vec2c(c.ox, c.oy);
-      grow(v, first, c.ox, c.oy, c.ox, c.oy);
-      notes.push_back("point (" + detail::num(c.ox) + ", " + detail::num(c.oy) + "), black ring");
+    if (c.law == Law::Contains || c.law == Law::PlacedShape) {
+      point = Vec2c(c.px, c.py);
+      grow(v, first, c.px, c.py, c.px, c.py);
+      notes.push_back("point (" + detail::num(c.px) + ", " + detail::num(c.py) + "), black ring");
     }
   } catch (const std::exception& e) {
     notes.push_back(std::string("cannot draw: ") + e.what());

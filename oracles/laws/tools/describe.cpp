@@ -6,7 +6,8 @@
 //   collide_describe --laws     the law table only
 //
 // A kind: name, index (its kind byte), layout (fixed, vertices, children), fields (name, role),
-// sample values, byte_prefix. A law: name, inputs (pair, shape, values, scene), description.
+// sample values, byte_prefix. A law: name, inputs (pair, shape, values, scene, transform_values),
+// suite (static, placed, moving), description.
 
 #include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
@@ -45,7 +46,10 @@ json kinds_json() {
 json laws_json() {
   json out = json::array();
   for (const laws::LawInfo& row : laws::kLaws) {
-    out.push_back({{"name", row.name}, {"inputs", laws::name(row.inputs)}, {"description", row.description}});
+    out.push_back({{"name", row.name},
+                   {"inputs", laws::name(row.inputs)},
+                   {"suite", laws::name(row.suite)},
+                   {"description", row.description}});
   }
   return out;
 }

@@ -127,7 +127,7 @@ Core core_of(const Obb<T>& s) {
   // separating edge.)
   const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
   const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
-  if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) {
+  if (!(hmin > kThinBoxRatio * (c.cwiseAbs().maxCoeff() + hmax) && hmin > kUnderflowMargin)) {
     for (std::size_t i = 0; i < 4; ++i) {
       if (orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) return hull_core(q);
     }
@@ -148,8 +148,6 @@ Core core_of(const ConvexPolygon<T>& s) {
 // all below kTinyCore are first scaled by a power of two (exact: scaling up never rounds), so
 // decisions, depths and distances stay relative-accurate down to the subnormal range.
 
-/// Cores entirely below this magnitude are rescaled before any rounded computation.
-inline constexpr Calc kTinyCore = 0x1p-400;
 
 inline Calc max_abs(const Core& c) noexcept {
   Calc m = std::fabs(c.radius);
@@ -322,7 +320,7 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 /// 1e-159 apart keeps its 53 bits instead of the few left in a subnormal square.
 inline Calc norm_of(const Vec2c& v) noexcept {
   const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
-  if (!(m > 0) || (m >= 0x1p-500 && m <= 0x1p500)) return v.norm();
+  if (!(m > 0) || (m >= kPlainNormLow && m <= kPlainNormHigh)) return v.norm();
   int e = 0;
   static_cast<void>(std::frexp(m, &e));
   return std::ldexp(Vec2c(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e)).norm(), e);
@@ -332,7 +330,7 @@ inline Calc norm_of(const Vec2c& v) noexcept {
 inline Vec2c unit_of(const Vec2c& v) noexcept {
   const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
   if (!(m > 0)) return Vec2c::Zero();
-  if (m >= 0x1p-500 && m <= 0x1p500) return v / v.norm();
+  if (m >= kPlainNormLow && m <= kPlainNormHigh) return v / v.norm();
   int e = 0;
   static_cast<void>(std::frexp(m, &e));
   const Vec2c s(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));

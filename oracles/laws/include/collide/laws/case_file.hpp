@@ -18,9 +18,11 @@
 ///     transform a 0x1p+0 0x0p+0 0x1p+0 0x0p+0         # optional: px py qx qy (identity when absent)
 ///     translation 0x1p+0 0x1p-3                       # translation law
 ///     rotation 1 mirror 0                             # rotation law
-///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast law: origin, direction
-///     point 0x1p+0 -0x1p-2                            # contains law: the point (kept in ox, oy)
-///     values 0x1p+0 nan -inf                          # rejection law: raw values (kind = shape a's)
+///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast laws: origin, direction
+///     point 0x1p+0 -0x1p-2                            # contains laws: the point
+///     values 0x1p+0 nan -inf                          # rejection laws: raw values (kind = shape a's)
+///     motion 0x1p+0 0x0p+0 0x0p+0 0x0p+0 max_t 0x1p+0 # cast laws: va, vb, max_t
+///     sweep a lx ly c0x c0y c1x c1y a0 a1             # toi law: local centre, centre at 0 and 1, angles
 ///     expected overlaps true
 ///     got overlaps false
 ///     source property agreement circle_obb float seed 123
@@ -35,6 +37,7 @@
 #include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
 
+#include <array>
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
@@ -55,11 +58,16 @@ struct Case {
   std::optional<ShapeData> b;      ///< second shape, for pair laws
   std::optional<TransformData> transform_a;  ///< a's placement (identity when absent)
   std::optional<TransformData> transform_b;  ///< b's placement (identity when absent)
-  double tx = 0, ty = 0;           ///< translation law: the move
+  double tx = 0, ty = 0;           ///< translation laws: the move
   int quarter_turns = 0;           ///< rotation law
   bool mirror = false;             ///< rotation law
-  double ox = 0, oy = 0, dx = 0, dy = 0, max_t = 0;  ///< raycast law: ray origin, direction, max_t; contains law: the point (ox, oy)
-  std::vector<double> values;      ///< rejection law: raw values for shape a's kind
+  double ox = 0, oy = 0, dx = 0, dy = 0;  ///< raycast laws: ray origin and direction
+  double max_t = 0;                ///< raycast and cast laws: end of the interval
+  double px = 0, py = 0;           ///< contains laws: the point
+  double vax = 0, vay = 0, vbx = 0, vby = 0;  ///< cast laws: the velocities of a and b
+  std::optional<std::array<double, 8>> sweep_a;  ///< toi law: a's sweep (local centre, c0, c1, a0, a1)
+  std::optional<std::array<double, 8>> sweep_b;  ///< toi law: b's sweep
+  std::vector<double> values;      ///< rejection laws: raw values for shape a's kind, or of a transform
   std::string expected;            ///< what the law expected (oracle side), one line
   std::string got;                 ///< what the library answered, one line
   std::string source;              ///< where it came from: property + pair + seed, or fuzz target + input

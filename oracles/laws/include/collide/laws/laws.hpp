@@ -12,6 +12,7 @@
 
 #include "collide/collide.hpp"
 
+#include <array>
 #include <cstdint>
 #include <iterator>
 #include <optional>
@@ -48,11 +49,11 @@ struct Verdict {
 template <Scalar T>
 Relation relation(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 1. overlaps(a, b) equals oracle::overlaps(a, b), for every pair and both scalars.
+/// Law agreement. overlaps(a, b) equals oracle::overlaps(a, b), for every pair and both scalars.
 template <Scalar T>
 Verdict agreement(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 2. overlaps(a, b) == overlaps(b, a) bit for bit; contact(a, b) and contact(b, a) both exist
+/// Law symmetry. overlaps(a, b) == overlaps(b, a) bit for bit; contact(a, b) and contact(b, a) both exist
 /// or neither does, with opposite normals and equal depths; distance(a, b) == distance(b, a).
 /// Normals and depths are compared within the tolerance (the two orders round differently); when
 /// the normals are not opposite (a tie between faces) the depths must still be equal and, for two
@@ -60,7 +61,7 @@ Verdict agreement(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict symmetry(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 3. Moving both shapes by t (with translated()): when both moves are exact (every stored
+/// Law translation. Moving both shapes by t (with translated()): when both moves are exact (every stored
 /// value moved by exactly t), overlaps() gives the identical answer; otherwise the moved pair
 /// must agree with the oracle, and the answer may change only where the unmoved pair is within
 /// 4 eps_T S of touching (the rounding of the move). A move that leaves the representable range is
@@ -68,14 +69,14 @@ Verdict symmetry(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t);
 
-/// Law 4. Rotating both shapes about the origin by quarter_turns * 90 degrees, then mirroring
+/// Law rotation. Rotating both shapes about the origin by quarter_turns * 90 degrees, then mirroring
 /// x -> -x when mirror is set (both exact on the stored values), gives identical answers of
 /// overlaps(). An OBB is first rebuilt through make_with_axis from its own axis, so that the
 /// rotated box is exactly the rotated point set.
 template <Scalar T>
 Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool mirror);
 
-/// Law 5. v = resolve(a, b): zero when overlaps(a, b) is false (an exact overlap then allowed only
+/// Law resolution. v = resolve(a, b): zero when overlaps(a, b) is false (an exact overlap then allowed only
 /// within the band); otherwise the shape a' that translated(a, v) produces does not overlap b
 /// (oracle), and, for two primitives, |v| <= exact depth + resolve_margin + slack, where slack =
 /// 4 tolerances (the computed depth's own error, as in contact_law) plus v's rounding to T
@@ -84,11 +85,11 @@ Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool m
 template <Scalar T>
 Verdict resolution(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 6a. bounds(s) contains s exactly (oracle::inside_box).
+/// Law bounds. bounds(s) contains s exactly (oracle::inside_box).
 template <Scalar T>
 Verdict bounds_law(const Shape<T>& s);
 
-/// Law 6b. raycast(s, ray, max_t), judged by raycast.hpp's contract with its bound
+/// Law raycast. raycast(s, ray, max_t), judged by raycast.hpp's contract with its bound
 /// delta = raycast_tolerance(s, ray): a hit has 0 <= t <= max_t, its point is within delta of the
 /// shape and of origin + t * direction; an origin inside the shape (deeper than delta) hits at
 /// t = 0; before the hit (or up to max_t when there is none) the ray passes no point deeper than
@@ -101,13 +102,13 @@ Verdict bounds_law(const Shape<T>& s);
 template <Scalar T>
 Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
-/// Law 7. overlaps(compound, x) == any child overlaps x (library against library, identical), and
+/// Law hierarchy. overlaps(compound, x) == any child overlaps x (library against library, identical), and
 /// the bounding-box early-out never changes an answer: when the compound's cached box misses x's
 /// box, no child overlaps x, by the library and by the oracle. compound must hold a Compound.
 template <Scalar T>
 Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x);
 
-/// Law 8. The same point set in another representation gives the identical overlaps() answer
+/// Law representation. The same point set in another representation gives the identical overlaps() answer
 /// against x: an AABB as a 4-vertex ConvexPolygon and as an unrotated OBB; a circle as a
 /// zero-length capsule; a zero-length capsule as a circle; an OBB with axis (1, 0) as an AABB.
 /// A representation that cannot be built exactly (e.g. a degenerate box as a polygon) is skipped
@@ -115,7 +116,7 @@ Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x);
 template <Scalar T>
 Verdict representation(const Shape<T>& a, const Shape<T>& x);
 
-/// Law 8b. contact(a, b) exists exactly when overlaps(a, b); its normal is a unit vector, its
+/// Law contact. contact(a, b) exists exactly when overlaps(a, b); its normal is a unit vector, its
 /// depth >= 0 and, for primitives, within 4 tolerances of the exact depth (plus T's rounding);
 /// each contact point lies within depth + 4 tolerances of both shapes. Direction: moving a by
 /// -normal * (depth + 2 bounds) separates it from b (oracle::separates; for compounds, some
@@ -127,27 +128,27 @@ Verdict representation(const Shape<T>& a, const Shape<T>& x);
 template <Scalar T>
 Verdict contact_law(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 8c. distance(a, b) is 0 exactly when overlaps(a, b), and otherwise within 4 tolerances
+/// Law distance. distance(a, b) is 0 exactly when overlaps(a, b), and otherwise within 4 tolerances
 /// (plus T's rounding) of the exact gap (oracle::compare_distance): a distance of 0 for shapes
 /// 3 apart fails, as does any value off the exact gap by more than the bound.
 template <Scalar T>
 Verdict distance_law(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 8d. contains(s, p) equals oracle::contains(s, p). Exact for AABBs and polygons (and
+/// Law contains. contains(s, p) equals oracle::contains(s, p). Exact for AABBs and polygons (and
 /// compounds of them); for circles, capsules and OBBs a difference is allowed only when p lies
 /// within contains_tolerance(s, p) of the boundary (of the child that differs), and is then a
 /// disagreement. NaN or infinite points: false.
 template <Scalar T>
 Verdict contains_law(const Shape<T>& s, const Vec2<T>& p);
 
-/// Law 8e. Touching judged exactly: when the oracle says a and b touch (signed distance exactly
+/// Law touching. Touching judged exactly: when the oracle says a and b touch (signed distance exactly
 /// 0), overlaps(a, b) and overlaps(b, a) are true, for every pair (no band); when the oracle says
 /// they are apart or overlapping by more than overlap_tolerance(a, b), both answers equal the
 /// oracle's; within the band (signed distance not 0) a difference is a disagreement.
 template <Scalar T>
 Verdict touching(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 8f. A scene (the children of the compound `group`, each taken as a shape):
+/// Law scene. A scene (the children of the compound `group`, each taken as a shape):
 /// broadphase::find_overlapping_shapes() lists exactly the pairs overlaps() reports one pair at a
 /// time, find_contacts() gives one contact per such pair identical to contact(), and
 /// pairs_involving() on a DynamicTree of their bounds gives each pair of meeting boxes with a proxy
@@ -155,7 +156,7 @@ Verdict touching(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict scene(const Shape<T>& group);
 
-/// Law 9. Building a shape of `kind` from raw values (any bit patterns) through its make():
+/// Law rejection. Building a shape of `kind` from raw values (any bit patterns) through its make():
 /// NaN or infinity gives Error::NonFinite, a magnitude above max_magnitude<T>() Error::OutOfRange
 /// (first offending value in argument order), then the kind's own named errors (negative radius
 /// or extent, min > max, zero axis; polygons: TooFewVertices, Collinear or NonConvex), and
@@ -166,12 +167,16 @@ template <Scalar T>
 Verdict rejection(ShapeKind kind, std::span<const T> values);
 
 /// What a law takes, and so how its tests are registered: per unordered pair of kinds, per kind,
-/// raw values per kind, or one group of shapes.
-enum class LawInputs : std::uint8_t { Pair, Shape, Values, Scene };
+/// raw values per kind, one group of shapes, or raw values of a transform (once).
+enum class LawInputs : std::uint8_t { Pair, Shape, Values, Scene, TransformValues };
+
+/// Which property suite runs a law: world-space shapes (properties/laws_test.cpp), shapes placed
+/// by transforms (properties/transform_test.cpp), or moving shapes (properties/cast_test.cpp).
+enum class LawSuite : std::uint8_t { Static, Placed, Moving };
 
 /// Every law, in the order of law_table.inc.
 enum class Law : std::uint8_t {
-#define COLLIDE_LAW(id, law_name, inputs, description) id,
+#define COLLIDE_LAW(id, law_name, inputs, suite, description) id,
 #include "collide/laws/law_table.inc"
 #undef COLLIDE_LAW
 };
@@ -181,12 +186,14 @@ struct LawInfo {
   Law law;                       ///< the law
   std::string_view name;         ///< as in case files, test names, ctest names, reports
   LawInputs inputs;              ///< what it takes
+  LawSuite suite;                ///< which property suite runs it
   std::string_view description;  ///< one line
 };
 
 /// The law table (law_table.inc), in Law order.
 inline constexpr LawInfo kLaws[] = {
-#define COLLIDE_LAW(id, law_name, inputs, description) {Law::id, #law_name, LawInputs::inputs, description},
+#define COLLIDE_LAW(id, law_name, inputs, suite, description) \
+  {Law::id, #law_name, LawInputs::inputs, LawSuite::suite, description},
 #include "collide/laws/law_table.inc"
 #undef COLLIDE_LAW
 };
@@ -205,58 +212,63 @@ constexpr std::optional<Law> law_from_name(std::string_view s) noexcept {
   }
   return std::nullopt;
 }
-/// "pair", "shape", "values", "scene".
+/// "pair", "shape", "values", "scene", "transform_values".
 constexpr std::string_view name(LawInputs i) noexcept {
-  constexpr std::string_view names[] = {"pair", "shape", "values", "scene"};
+  constexpr std::string_view names[] = {"pair", "shape", "values", "scene", "transform_values"};
   return names[static_cast<std::size_t>(i)];
+}
+/// "static", "placed", "moving".
+constexpr std::string_view name(LawSuite s) noexcept {
+  constexpr std::string_view names[] = {"static", "placed", "moving"};
+  return names[static_cast<std::size_t>(s)];
 }
 
 // ---------------------------------------------------------------------------------------------
 // Shapes placed by transforms (transformed.hpp). Each law judges the library on the exact images
 // (oracle::placed): a shape with transform x is the exact image of its stored values under x.
 
-/// Law 10a. overlaps(a, xa, b, xb) equals the oracle's answer on the exact images outside the band
+/// Law placed_agreement. overlaps(a, xa, b, xb) equals the oracle's answer on the exact images outside the band
 /// overlap_tolerance(a, xa, b, xb) (inside it a difference is a disagreement); it is symmetric to
 /// the bit, equals overlaps(a, b) for identities, and contact() / distance() agree with it.
 template <Scalar T>
 Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
-/// Law 10b. The rounded outputs of placed shapes against the exact images: contact normal a unit
+/// Law placed_outputs. The rounded outputs of placed shapes against the exact images: contact normal a unit
 /// vector, depth >= 0 and (two primitives) within 4 rounding_tolerance(a, xa, b, xb) plus T's
 /// rounding of the exact depth, a moved by -normal (depth + 2 bounds) apart, each point within
 /// depth + bound of both shapes; distance within that bound of the exact gap.
 template <Scalar T>
 Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
-/// Law 10c. v = resolve(a, xa, b, xb): zero without an overlap; otherwise a with its transform
+/// Law placed_resolution. v = resolve(a, xa, b, xb): zero without an overlap; otherwise a with its transform
 /// moved by v (Transform::moved; OutOfRange allowed, then the exact move is judged) is apart from b
 /// by the oracle, and for two primitives the gap left is at most 2 (resolve_margin(a, xa, b, xb,
-/// |v|) + slack) and |v| at most the exact depth + margin + slack (slack as in law 5).
+/// |v|) + slack) and |v| at most the exact depth + margin + slack (slack as in law resolution).
 template <Scalar T>
 Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
-/// Law 10d. One placed shape: bounds(s, x) contains the exact image; contains(s, x, p) equals the
+/// Law placed_shape. One placed shape: bounds(s, x) contains the exact image; contains(s, x, p) equals the
 /// oracle outside transform_tolerance(s, x) of the boundary; a raycast hit has 0 <= t <= max_t and
 /// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means the
 /// segment to max_t meets the image only within that bound. Identity: the world-space answers.
 template <Scalar T>
 Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const Ray<T>& ray, T max_t);
 
-/// Law 10e. Moving both shapes by the same transform x keeps every answer: exactly (overlaps and
+/// Law placed_covariance. Moving both shapes by the same transform x keeps every answer: exactly (overlaps and
 /// contains identical) when x is a quarter turn with every mapped coordinate exact; otherwise
 /// overlaps() may change only within overlap_tolerance(a, x, b, x) plus the scaling band of |q|
 /// (R(q) scales positions by |q|, not radii); distance and depth kept within both pairs' bounds.
 template <Scalar T>
 Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<T>& x);
 
-/// Law 10f. A shape with transform x equals the world shape x(s) built by the factories in T:
+/// Law placed_image. A shape with transform x equals the world shape x(s) built by the factories in T:
 /// identical overlaps, distance and contact when every mapped value is exact in T; otherwise
 /// overlaps() differs only within transform_tolerance(s, x) plus T's rounding of the built shape,
 /// and distances within the bounds.
 template <Scalar T>
 Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& other);
 
-/// Law 10g. Transform::make(p, angle) and make_with_rotation(p, r) from raw values (position,
+/// Law transform_rejection. Transform::make(p, angle) and make_with_rotation(p, r) from raw values (position,
 /// angle, rotation: values 0, 1 | 2 | 3, 4): NaN or infinity gives NonFinite and a magnitude above
 /// max_magnitude<T>() OutOfRange, at the first offending value; a zero rotation vector
 /// ZeroRotation; a rotation with | |r|^2 - 1 | <= 4 eps_T is kept bit for bit, any other is
@@ -265,17 +277,12 @@ Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& o
 template <Scalar T>
 Verdict transform_rejection(std::span<const T> values);
 
-/// The transform laws' names, as in reports and test names.
-inline constexpr std::string_view kTransformLawNames[] = {"placed_agreement", "placed_outputs",  "placed_resolution",
-                                                          "placed_shape",     "placed_covariance", "placed_image",
-                                                          "transform_rejection"};
-
 // ---------------------------------------------------------------------------------------------
 // Contact manifolds (oracles/laws/src/manifold_laws.cpp). The bound of a point below is
 // 4 rounding tolerances plus the rounding to T of the point (2 eps_T S) and of the separation,
 // and the normal's rounding over half the separation (8 eps_T |s|).
 
-/// Law 10a. Every point of contact(a, b) has a finite separation s <= bound (no speculative
+/// Law separation. Every point of contact(a, b) has a finite separation s <= bound (no speculative
 /// distance: penetrating or touching), and its surface points lie where s says: a's at
 /// p - normal s / 2 and b's at p + normal s / 2 each within the bound of that shape's boundary
 /// (oracle::compare_boundary_distance; a circle or capsule only needs to reach the point, since
@@ -285,7 +292,7 @@ inline constexpr std::string_view kTransformLawNames[] = {"placed_agreement", "p
 template <Scalar T>
 Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 10b. Feature ids of contact(a, b) (numbering in collide/feature.hpp): each id names an
+/// Law feature_ids. Feature ids of contact(a, b) (numbering in collide/feature.hpp): each id names an
 /// existing child, vertex or edge of each shape, lying within the shape's radius + bound + 4 depth
 /// of that shape's surface point (a vertex counts with its adjacent edges, along which a clipped
 /// point slides); two points have different ids; and stability: with b moved by +t and by -t
@@ -295,7 +302,7 @@ Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
 
-/// Law 10c. contact(a, b, speculative) with speculative = 2^(ilogb(size) - 3), size the larger
+/// Law speculative. contact(a, b, speculative) with speculative = 2^(ilogb(size) - 3), size the larger
 /// bounding-box side: for overlapping pairs it exists, with contact(a, b)'s normal and depth and at
 /// least its point count; for pairs apart it exists when the exact gap is below speculative - bound
 /// and not when above speculative + bound; a speculative contact of shapes apart has depth 0, a
@@ -358,5 +365,8 @@ Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t);
 template <Scalar T>
 Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const Sweep<T>& sb, T max_t,
                 std::span<const double> samples);
+
+/// The sample times of the time-of-impact law in the property suite and in regression cases.
+inline constexpr std::array<double, 8> kToiSamples = {0, 0.125, 0.25, 0.5, 0.75, 0.875, 0.999, 1};
 
 }  // namespace collide::laws
