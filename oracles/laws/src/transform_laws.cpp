@@ -17,6 +17,7 @@ namespace collide::laws {
 
 using detail::describe;
 using detail::num;
+using detail::quarter_turn;
 using detail::vec;
 using detail::yes;
 
@@ -72,12 +73,6 @@ inline Relation placed_relation(const oracle::Placed& a, const oracle::Placed& b
   return oracle::within_band(a, b, 0.0) ? Relation::Touching : Relation::Overlapping;
 }
 
-/// A quarter turn stored exactly: q is (+-1, 0) or (0, +-1).
-template <Scalar T>
-bool quarter_turn(const Transform<T>& x) {
-  const T c = x.rotation().x(), s = x.rotation().y();
-  return (std::fabs(c) == T(1) && s == T(0)) || (c == T(0) && std::fabs(s) == T(1));
-}
 
 /// Every mapped coordinate of s's stored positions under x is exact in U (double: the images; T:
 /// the world shape a factory builds). Compounds with child transforms never count as exact.
