@@ -7,6 +7,9 @@ kind added to the registry and its codec gets seeds here without an edit. Seeds 
 deterministic: every unordered pair of kinds in float and double, overlapping, touching (for the
 kinds whose samples 2 apart touch exactly) and separated; every kind with valid values, special
 values (NaN, infinities, huge, subnormal) and values aimed at its rules; a few broadphase scripts.
+Some seeds place their shapes by transforms (pair flags bit 6: a transform after each shape, a
+quarter turn or a rounded rotation; compounds whose children carry child transforms, count byte
+bit 7; shapes_from_bytes flags bit 1: a transform after the shape).
 
 usage: fuzz/make_corpus.py [--build-dir build/ci] [--out fuzz/corpus] [--drop-failing]
 (replaces the seed files it writes, s-*.bin). With --drop-failing, every seed is run through
@@ -24,6 +27,12 @@ import tempfile
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
 import collide_tools  # noqa: E402
+
+
+# Bits of the byte format of collide/fuzz/decode.hpp.
+PLACED_BIT = 0x40          # pair flags: a transform (px py qx qy) follows each shape
+CHILD_TRANSFORMS = 0x80    # compound count byte: each child is followed by its transform
+SHAPE_TRANSFORM_BIT = 0x02  # shapes_from_bytes flags: a transform follows the shape
 
 
 def scalar(v, dbl):
@@ -52,23 +61,30 @@ class Codecs:
                        size * v if role == "size" else v)
         return out
 
-    def encode(self, kind, values, dbl, children=()):
-        """Kind byte, byte prefix, count byte (vertices, children), then the values or children."""
+    def encode(self, kind, values, dbl, children=(), child_transforms=False):
+        """Kind byte, byte prefix, count byte (vertices, children), then the values or children
+        (each child followed by its transform when child_transforms)."""
         k = self.kinds[kind]
         out = bytes([k["index"]]) + bytes(k["byte_prefix"])
         if k["layout"] == "vertices":
             out += bytes([len(values) // len(k["fields"])])
         if k["layout"] == "children":
-            return out + bytes([len(children)]) + b"".join(children)
+            return out + bytes([len(children) | (CHILD_TRANSFORMS if child_transforms else 0)]) + b"".join(children)
         return out + scalars(values, dbl)
 
-    def shape(self, kind, cx, cy, size, dbl):
-        """A shape of `kind` around (cx, cy); a compound of the first two kinds side by side."""
+    def shape(self, kind, cx, cy, size, dbl, child_transforms=False):
+        """A shape of `kind` around (cx, cy); a compound of the first two kinds side by side, with
+        child_transforms each child stored around its own origin and placed there by a quarter
+        turn (the same point set: the samples are symmetric under it)."""
         if self.kinds[kind]["layout"] == "children":
             first, second = [n for n in self.names if self.kinds[n]["layout"] != "children"][:2]
-            kids = (self.shape(first, cx - size / 2, cy, size / 2, dbl),
-                    self.shape(second, cx + size / 2, cy, size / 2, dbl))
-            return self.encode(kind, [], dbl, kids)
+            if child_transforms:
+                kids = (self.shape(first, 0, 0, size / 2, dbl) + transform(cx - size / 2, cy, 0.0, 1.0, dbl),
+                        self.shape(second, 0, 0, size / 2, dbl) + transform(cx + size / 2, cy, 0.0, -1.0, dbl))
+            else:
+                kids = (self.shape(first, cx - size / 2, cy, size / 2, dbl),
+                        self.shape(second, cx + size / 2, cy, size / 2, dbl))
+            return self.encode(kind, [], dbl, kids, child_transforms)
         return self.encode(kind, self.placed(kind, cx, cy, size), dbl)
 
     def first_value_offset(self, kind):
@@ -77,15 +93,35 @@ class Codecs:
         return 1 + len(k["byte_prefix"]) + (0 if k["layout"] == "fixed" else 1)
 
 
-def pair_inputs(codecs, extra=None, flags_extra=0):
-    """(name, bytes) for every unordered pair of kinds, both scalars, three placements."""
+def transform(px, py, qx, qy, dbl):
+    """A transform's stored values px py qx qy (its codec, through make_with_rotation)."""
+    return scalars([px, py, qx, qy], dbl)
+
+
+# Both shapes of a placed seed by one transform (the pair keeps its relation): a quarter turn
+# (exact images) or a rotation by (0.6, 0.8) rounded to the scalar.
+PLACEMENTS = (("quarter", (3.0, -2.0, 0.0, 1.0)), ("turned", (-1.5, 0.5, 0.6, 0.8)))
+
+
+def pair_inputs(codecs, extra=None, flags_extra=0, placed=False):
+    """(name, bytes) for every unordered pair of kinds, both scalars, three placements; placed:
+    both shapes placed by each of PLACEMENTS (flags bit 6), compounds with child transforms."""
     out = []
     for a, b in itertools.combinations_with_replacement(codecs.names, 2):
         for dbl in (False, True):
             for place, dx in (("overlap", 0.75), ("touch", 2.0), ("apart", 3.5)):
-                data = (bytes([int(dbl) | flags_extra]) + codecs.shape(a, 0, 0, 1, dbl)
-                        + codecs.shape(b, dx, 0.25 if place == "apart" else 0, 1, dbl))
-                out.append((f"{a}_{b}-{'double' if dbl else 'float'}-{place}", data + (extra(dbl) if extra else b"")))
+                scalar_tag = "double" if dbl else "float"
+                tail = extra(dbl) if extra else b""
+                if not placed:
+                    data = (bytes([int(dbl) | flags_extra]) + codecs.shape(a, 0, 0, 1, dbl)
+                            + codecs.shape(b, dx, 0.25 if place == "apart" else 0, 1, dbl))
+                    out.append((f"{a}_{b}-{scalar_tag}-{place}", data + tail))
+                    continue
+                for name, xf in PLACEMENTS:
+                    data = (bytes([int(dbl) | flags_extra | PLACED_BIT]) + codecs.shape(a, 0, 0, 1, dbl, True)
+                            + transform(*xf, dbl)
+                            + codecs.shape(b, dx, 0.25 if place == "apart" else 0, 1, dbl, True) + transform(*xf, dbl))
+                    out.append((f"{a}_{b}-{scalar_tag}-{place}-{name}", data + tail))
     return out
 
 
@@ -140,6 +176,13 @@ def shapes_from_bytes_inputs(codecs):
                 pos += 1  # the first child's kind byte
             base[pos:pos + w] = scalar(v, dbl)
             out.append((f"{kind}-{tag}-special{n}", bytes(base)))
+        # A transform after the shape: valid (kept, or normalised), a zero rotation, NaN.
+        placed = bytes([int(dbl) | SHAPE_TRANSFORM_BIT])
+        for name, xf in (("unit", (1, -2, 0.6, 0.8)), ("normalised", (0, 0, 3, 4)), ("zero", (1, 1, 0, 0)),
+                         ("nan", (float("nan"), 0, 1, 0))):
+            for kind in codecs.names:
+                out.append((f"{kind}-{tag}-transform-{name}",
+                            placed + codecs.shape(kind, 1, -2, 1.5, dbl, True) + transform(*xf, dbl)))
     return out
 
 
@@ -192,9 +235,10 @@ def main():
             return subprocess.run([str(exe), f.name], capture_output=True).returncode == 0
 
     sets = {
-        "overlap_oracle": pair_inputs(codecs),
-        "resolve": pair_inputs(codecs, flags_extra=2) + pair_inputs(codecs)[::7],
-        "contact_raycast": pair_inputs(codecs, extra=ray),
+        "overlap_oracle": pair_inputs(codecs) + pair_inputs(codecs, placed=True),
+        "resolve": (pair_inputs(codecs, flags_extra=2) + pair_inputs(codecs)[::7]
+                    + pair_inputs(codecs, flags_extra=2, placed=True)[::3]),
+        "contact_raycast": pair_inputs(codecs, extra=ray) + pair_inputs(codecs, extra=ray, placed=True)[::2],
         "shapes_from_bytes": shapes_from_bytes_inputs(codecs),
         "broadphase": broadphase_inputs(),
     }

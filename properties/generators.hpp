@@ -12,10 +12,12 @@
 /// through the registry (visit_kind).
 
 #include "collide/collide.hpp"
+#include "collide/laws/codec.hpp"
 #include "collide/laws/transform.hpp"
 
 #include <rapidcheck.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -88,14 +90,91 @@ Primitive<T> gen_any_primitive(double s) {
   });
 }
 
-/// A shape of kind K at scale s. A compound has 1 to 3 children of any primitive kind.
+/// A transform: the identity, an exact one (dyadic position, a quarter turn), or a rounded one
+/// (an angle, or a direction that is normalised), at scale s or far away.
+template <Scalar T>
+Transform<T> gen_transform(double s) {
+  using V = Vec2<T>;
+  const int style = *rc::gen::inRange(0, 6);
+  const V p(T(grid(-64, 64) * s / 4), T(grid(-64, 64) * s / 4));
+  if (style == 0) return Transform<T>();
+  if (style == 1) {
+    const std::array<V, 4> quarter = {V(1, 0), V(0, 1), V(-1, 0), V(0, -1)};
+    return Transform<T>::make_with_rotation(p, quarter[std::size_t(*rc::gen::inRange(0, 4))]).value();
+  }
+  if (style == 2) return Transform<T>::make(p, T(grid(-64, 64) / 10)).value();
+  if (style == 3) {
+    const std::vector<V> dirs = {V(3, 4), V(1, 1), V(64, 1), V(-5, 12), V(2, 0)};
+    return Transform<T>::make_with_rotation(p, *rc::gen::elementOf(dirs)).value();
+  }
+  if (style == 4) return Transform<T>::make(V(T(1e6 + grid(-8, 8)), T(-1e6)), T(grid(-64, 64) / 10)).value();
+  return Transform<T>::make_translation(V(T(grid(-64, 64) * s / 3), T(grid(-64, 64) * s / 3))).value();
+}
+
+/// p moved by t when no moved value rounds (every position coordinate plus t exact in double and
+/// in T, the other values unchanged), else nothing.
+template <Scalar T>
+std::optional<Primitive<T>> moved_exactly(const Primitive<T>& p, const Vec2<T>& t) {
+  const Expected<Primitive<T>> m = translated(p, t);
+  if (!m) return std::nullopt;
+  const laws::ShapeData d0 = laws::to_data(to_shape(p)), d1 = laws::to_data(to_shape(*m));
+  if (d0.values.size() != d1.values.size()) return std::nullopt;
+  const laws::KindCodec codec = laws::codec_of(d0.kind);
+  for (std::size_t i = 0; i < d0.values.size(); ++i) {
+    const laws::Role role = codec.fields[i % codec.fields.size()].role;
+    const double shift = role == laws::Role::X ? double(t.x()) : role == laws::Role::Y ? double(t.y()) : 0.0;
+    const double sum = d0.values[i] + shift;
+    const double back = sum - shift;  // two-sum: the sum is exact when both differences vanish
+    if (back != d0.values[i] || sum - back != shift || sum != d1.values[i]) return std::nullopt;
+  }
+  return *m;
+}
+
+/// Child c of a compound placed by an exact transform that keeps it where it is: the child stored
+/// turned back by a quarter turn about a dyadic point p, placed by (p, that quarter turn), so the
+/// image is c again, exactly. c itself with the identity when a value would round.
+template <Scalar T>
+typename Compound<T>::Child in_place_child(const Primitive<T>& c, double s) {
+  using V = Vec2<T>;
+  const V p(T(grid(-64, 64) * s / 4), T(grid(-64, 64) * s / 4));
+  const int k = *rc::gen::inRange(0, 4);
+  const std::array<V, 4> quarter = {V(1, 0), V(0, 1), V(-1, 0), V(0, -1)};
+  const std::optional<Primitive<T>> shifted = moved_exactly(c, V(-p));
+  if (!shifted) return {c, Transform<T>()};
+  return {laws::turned(*shifted, -k, false), Transform<T>::make_with_rotation(p, quarter[std::size_t(k)]).value()};
+}
+
+/// A compound's children given transforms, sometimes (other shapes unchanged; a compound that has
+/// child transforms already is kept): per child the identity, an exact transform that keeps the
+/// child's world shape (in_place_child), or a rounded or exact one that moves it (gen_transform at
+/// an eighth of the scale).
+template <Scalar T>
+Shape<T> with_child_transforms(const Shape<T>& s, double scale) {
+  const auto* c = std::get_if<Compound<T>>(&s);
+  if (c == nullptr || c->has_child_transforms() || !*rc::gen::arbitrary<bool>()) return s;
+  std::vector<typename Compound<T>::Child> kids;
+  for (const Primitive<T>& p : c->children()) {
+    const int style = *rc::gen::inRange(0, 3);
+    if (style == 0) {
+      kids.push_back({p, Transform<T>()});
+    } else if (style == 1) {
+      kids.push_back(in_place_child(p, scale));
+    } else {
+      kids.push_back({p, gen_transform<T>(scale / 8)});
+    }
+  }
+  return Compound<T>::make_placed(std::move(kids)).value();
+}
+
+/// A shape of kind K at scale s. A compound has 1 to 3 children of any primitive kind, sometimes
+/// with child transforms (with_child_transforms).
 template <ShapeKind K, Scalar T>
 Shape<T> gen_shape(double s) {
   if constexpr (K == ShapeKind::Compound) {
     const int n = *rc::gen::inRange(1, 4);
     std::vector<Primitive<T>> children;
     for (int i = 0; i < n; ++i) children.push_back(gen_any_primitive<T>(s));
-    return Compound<T>(std::move(children));
+    return with_child_transforms(Shape<T>(Compound<T>(std::move(children))), s);
   } else {
     return to_shape(gen_primitive<K, T>(s));
   }
@@ -107,11 +186,18 @@ Shape<T> gen_shape_of(ShapeKind k, double s) {
   return visit_kind(k, [&]<ShapeKind K>() { return gen_shape<K, T>(s); });
 }
 
-/// Extreme point of a shape in direction +x (sign = +1) or -x (sign = -1): x and a y where the
-/// shape reaches it. Exact for everything but rotated OBBs (rounded corners).
+/// The core of child i of a compound as placed by its child transform (its image, rounded to
+/// double unless the transform is exact).
 template <Scalar T>
-Vec2c extreme_x(const Primitive<T>& p, int sign) {
-  const ::collide::detail::Core core = std::visit([](const auto& s) { return ::collide::detail::core_of(s); }, p);
+::collide::detail::Core placed_core(const Compound<T>& c, std::size_t i) {
+  ::collide::detail::Core core;
+  ::collide::detail::visit_child(c, i, ::collide::detail::Pose{},
+                                 [&](const auto& img) { core = ::collide::detail::core_of(img); });
+  return core;
+}
+
+/// Extreme point of a core in direction +x (sign = +1) or -x (sign = -1).
+inline Vec2c extreme_x(const ::collide::detail::Core& core, int sign) {
   Vec2c best = core[0];
   for (const Vec2c& q : core.pts()) {
     if (sign * q.x() > sign * best.x()) best = q;
@@ -119,12 +205,19 @@ Vec2c extreme_x(const Primitive<T>& p, int sign) {
   return {best.x() + sign * core.radius, best.y()};
 }
 
+/// Extreme point of a shape in direction +x (sign = +1) or -x (sign = -1): x and a y where the
+/// shape reaches it. Exact for everything but rotated OBBs (rounded corners).
+template <Scalar T>
+Vec2c extreme_x(const Primitive<T>& p, int sign) {
+  return extreme_x(std::visit([](const auto& s) { return ::collide::detail::core_of(s); }, p), sign);
+}
+
 template <Scalar T>
 Vec2c extreme_x(const Shape<T>& s, int sign) {
   if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    Vec2c best = extreme_x(c->children().front(), sign);
-    for (const Primitive<T>& p : c->children()) {
-      const Vec2c q = extreme_x(p, sign);
+    Vec2c best = extreme_x(placed_core(*c, 0), sign);
+    for (std::size_t i = 0; i < c->children().size(); ++i) {
+      const Vec2c q = extreme_x(placed_core(*c, i), sign);
       if (sign * q.x() > sign * best.x()) best = q;
     }
     return best;
@@ -141,9 +234,10 @@ Vec2c extreme_x(const Shape<T>& s, int sign) {
       s);
 }
 
-/// The core of a shape's first primitive (a compound's first child).
+/// The core of a shape's first primitive (a compound's first child, placed).
 template <Scalar T>
 ::collide::detail::Core first_core(const Shape<T>& s) {
+  if (const auto* c = std::get_if<Compound<T>>(&s)) return placed_core(*c, 0);
   return std::visit([](const auto& x) { return ::collide::detail::core_of(x); }, laws::primitives_of(s).front());
 }
 

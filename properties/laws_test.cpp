@@ -202,10 +202,10 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return [=] {
         // The compound: a's primitives plus up to two more children nearby.
         const auto [a, b] = gen_pair<T>(ka, kb);
-        std::vector<Primitive<T>> children = laws::primitives_of(a);
+        std::vector<typename Compound<T>::Child> children = laws::placed_primitives_of(a);
         const int extra = *rc::gen::inRange(0, 3);
-        for (int i = 0; i < extra; ++i) children.push_back(gen_any_primitive<T>(1.0));
-        const Shape<T> comp = Compound<T>(std::move(children));
+        for (int i = 0; i < extra; ++i) children.push_back({gen_any_primitive<T>(1.0), Transform<T>()});
+        const Shape<T> comp = with_child_transforms(Shape<T>(Compound<T>::make_placed(std::move(children)).value()), 1.0);
         judge<T>(laws::hierarchy(comp, b), law, subject, comp, b, true);
       };
     case Law::Representation:

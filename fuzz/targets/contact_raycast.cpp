@@ -1,8 +1,10 @@
 // Fuzz target contact_raycast: contact(), distance() and raycast() against the exact oracle
-// (laws "contact", "distance" and "raycast").
+// (laws "contact", "distance" and "raycast"). Shapes placed by transforms: the same queries with
+// transforms judged on the exact images (laws "placed_outputs" and "placed_shape", the ray's
+// origin as the point for contains()).
 //
-// Input: flags byte (bit 0: double), shape a, shape b, then a ray cast at a: origin x y,
-// direction x y, max_t (raw bit patterns of the scalar).
+// Input: flags byte (bit 0: double; bit 6: a transform follows each shape), shape a [xa], shape b
+// [xb], then a ray cast at a: origin x y, direction x y, max_t (raw bit patterns of the scalar).
 
 #include "collide/fuzz/pair_target.hpp"
 #include "collide/laws/laws.hpp"
@@ -35,13 +37,13 @@ RayCase<T> read_ray(Reader& r) {
   return {{origin, Vec2<T>(dx, dy)}, max_t};
 }
 
-/// Calls f(a, b, ray) with a valid pair and the ray read after it (the ray may be invalid: the
-/// law expects the library's named rejection then).
+/// Calls f(a, xa, b, xb, ray) with a valid pair and the ray read after it (the ray may be
+/// invalid: the law expects the library's named rejection then).
 template <class F>
 void decode_case(Reader& r, F&& f) {
-  with_pair(r, [&](const PairHeader&, const auto& a, const auto& b, Reader& rest) {
+  with_placed_pair(r, [&](const PairHeader&, const auto& a, const auto& xa, const auto& b, const auto& xb, Reader& rest) {
     using T = scalar_of_t<std::remove_cvref_t<decltype(a)>>;
-    f(a, b, read_ray<T>(rest));
+    f(a, xa, b, xb, read_ray<T>(rest));
   });
 }
 
@@ -53,28 +55,37 @@ bool valid_ray(const RayCase<T>& r) {
 }
 
 template <Scalar T>
-void check(const Shape<T>& a, const Shape<T>& b, const RayCase<T>& ray) {
+void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb, const RayCase<T>& ray) {
+  const bool placed = !xa.is_identity() || !xb.is_identity();
   try {
-    require(laws::Law::Contact, laws::contact_law(a, b), a, some(b));
-    require(laws::Law::Distance, laws::distance_law(a, b), a, some(b));
+    if (placed) {
+      require_placed("placed_outputs", laws::placed_outputs(a, xa, b, xb), a, xa, some(b), xb);
+    } else {
+      require(laws::Law::Contact, laws::contact_law(a, b), a, some(b));
+      require(laws::Law::Distance, laws::distance_law(a, b), a, some(b));
+    }
   } catch (const oracle::Unsupported&) {
     // not judged
   }
   const bool finite = ray.ray.origin.allFinite() && ray.ray.direction.allFinite() && std::isfinite(ray.max_t);
   if (!finite || ray.max_t < T(0)) {
     // Documented: a NaN or infinite value, or max_t < 0, gives no hit.
-    if (raycast(a, Ray<T>{ray.ray.origin, ray.ray.direction}, ray.max_t)) {
+    if (raycast(a, xa, Ray<T>{ray.ray.origin, ray.ray.direction}, ray.max_t)) {
       fail_raw("raycast with a non-finite value or a negative max_t returned a hit");
     }
     return;
   }
   if (!valid_ray(ray)) {
     // Beyond max_magnitude: not covered by the error contract, but the answer must be sane.
-    const auto hit = raycast(a, Ray<T>{ray.ray.origin, ray.ray.direction}, ray.max_t);
+    const auto hit = raycast(a, xa, Ray<T>{ray.ray.origin, ray.ray.direction}, ray.max_t);
     if (hit && !(hit->t >= T(0) && hit->t <= ray.max_t)) fail_raw("raycast returned t outside [0, max_t]");
     return;
   }
   try {
+    if (placed) {
+      require_placed("placed_shape", laws::placed_shape(a, xa, ray.ray.origin, ray.ray, ray.max_t), a, xa);
+      return;
+    }
     const laws::Verdict v = laws::raycast_law(a, ray.ray, ray.max_t);
     if (!v.ok) {
       std::fprintf(stderr, "  ray origin %s direction %s max_t %s\n", format_point(widen(ray.ray.origin)).c_str(),
@@ -97,7 +108,9 @@ void check(const Shape<T>& a, const Shape<T>& b, const RayCase<T>& ray) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   current_input() = {data, size};
   Reader r(data, size);
-  decode_case(r, [](const auto& a, const auto& b, const auto& ray) { check(a, b, ray); });
+  decode_case(r, [](const auto& a, const auto& xa, const auto& b, const auto& xb, const auto& ray) {
+    check(a, xa, b, xb, ray);
+  });
   return 0;
 }
 
@@ -105,7 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
                                                unsigned int seed) {
   return mutate_pair_case(data, size, max_size, seed, [](Reader& r, auto&& f) {
-    decode_case(r, [&](const auto& a, const auto& b, const auto&) { f(a, b); });
+    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&, const auto&) { f(a, b); });
   });
 }
 #endif

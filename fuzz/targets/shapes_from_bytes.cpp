@@ -48,7 +48,8 @@ bool same_data(const laws::ShapeData& x, const laws::ShapeData& y) {
   for (std::size_t i = 0; i < x.children.size(); ++i) {
     if (!same_data(x.children[i], y.children[i])) return false;
   }
-  return true;
+  if (x.placement.has_value() != y.placement.has_value()) return false;
+  return !x.placement || std::memcmp(x.placement->values.data(), y.placement->values.data(), 4 * sizeof(double)) == 0;
 }
 
 template <Scalar T>
@@ -130,7 +131,7 @@ template <Scalar T>
 Shape<T> stand_in(ShapeKind kind) {
   auto sample = [](ShapeKind k) {
     const laws::KindCodec c = laws::codec_of(k);
-    return laws::ShapeData{k, std::vector<double>(c.sample.begin(), c.sample.end()), {}};
+    return laws::ShapeData{k, std::vector<double>(c.sample.begin(), c.sample.end()), {}, {}};
   };
   laws::ShapeData d = sample(kind);
   if (laws::codec_of(kind).layout == laws::Layout::Children) d.children.push_back(sample(kKinds[0]));

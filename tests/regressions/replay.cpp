@@ -76,11 +76,20 @@ int round_trip_shapes() {
       Capsule<T>(V(T(0), T(0)), V(T(1), T(1) / 7), T(0.25)),
       ConvexPolygon<T>({V(T(0), T(0)), V(T(2), T(0.1)), V(T(1), T(3))}),
       Compound<T>({Circle<T>(V(T(5), T(5)), T(1)), Aabb<T>(V(T(0), T(0)), V(T(1), T(1)))}),
+      // Children placed by child transforms: a quarter turn, a rounded rotation, the identity.
+      Compound<T>::make_placed({{Aabb<T>(V(T(0), T(0)), V(T(2), T(1))), Transform<T>::make_with_rotation(V(T(3), T(-1)), V(T(0), T(1))).value()},
+                                {Capsule<T>(V(T(0), T(0)), V(T(1), T(0)), T(0.5)), Transform<T>::make(V(T(0.1), T(7)), T(0.3)).value()},
+                                {Circle<T>(V(T(5), T(5)), T(1)), Transform<T>()}})
+          .value(),
   };
   for (const Shape<T>& s : shapes) {
     const laws::ShapeData d = laws::to_data(s);
     const Shape<T> back = laws::from_data<T>(d);
     bad += check(laws::to_data(back).values == d.values, "shape values survive from_data(to_data(s))");
+    bool placements = laws::to_data(back).children.size() == d.children.size();
+    for (std::size_t i = 0; placements && i < d.children.size(); ++i)
+      placements = laws::to_data(back).children[i].placement == d.children[i].placement;
+    bad += check(placements, "child transforms survive from_data(to_data(s))");
     laws::Case c = laws::make_case<T>(laws::Law::Agreement, s, s, laws::agreement(s, s), "self-test");
     std::stringstream text;
     laws::write_case(text, c);
@@ -156,6 +165,16 @@ int self_test() {
   } catch (const laws::CaseError& e) {
     bad += check(std::string(e.what()).find("line 4") != std::string::npos, "the error names line 4");
   }
+  // A child's placement: only on a child line, four values after "at".
+  for (const char* bad_line : {"shape a circle 0x0p+0 0x0p+0 0x1p+0 at 0x0p+0 0x0p+0 0x1p+0 0x0p+0\n",
+                               "shape a compound 1\nchild circle 0x0p+0 0x0p+0 0x1p+0 at 0x0p+0 0x0p+0 0x1p+0\n"}) {
+    std::stringstream placed(std::string("collide-case 1\nlaw bounds\nscalar double\n") + bad_line);
+    try {
+      (void)laws::read_case(placed);
+      bad += check(false, std::string("a misplaced or short 'at' is rejected: ") + bad_line);
+    } catch (const laws::CaseError&) {
+    }
+  }
   // A float case whose value is not a float is rejected on replay, not silently rounded.
   std::stringstream inexact(
       "collide-case 1\nlaw bounds\nscalar float\nshape a circle 0x1.0000000000001p+0 0x0p+0 0x1p+0\n");
@@ -163,8 +182,8 @@ int self_test() {
   // Every kind's codec sample rebuilds through its factory in both scalars.
   for (const ShapeKind k : kKinds) {
     const laws::KindCodec codec = laws::codec_of(k);
-    laws::ShapeData d{k, std::vector<double>(codec.sample.begin(), codec.sample.end()), {}};
-    if (codec.layout == laws::Layout::Children) d.children.push_back({kKinds[0], {0, 0, 1}, {}});
+    laws::ShapeData d{k, std::vector<double>(codec.sample.begin(), codec.sample.end()), {}, {}};
+    if (codec.layout == laws::Layout::Children) d.children.push_back({kKinds[0], {0, 0, 1}, {}, {}});
     bool ok = true;
     try {
       ok = laws::to_data(laws::from_data<float>(d)).values == d.values &&

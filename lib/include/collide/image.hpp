@@ -99,12 +99,14 @@ template <Scalar T, class F>
 decltype(auto) with_image(const Obb<T>& s, const Pose& x, F&& f) {
   return f(ShapeAccess::obb<Calc>(image_point(x, widen(s.center())), widen(s.half_extents()), x.rotate(widen(s.axis()))));
 }
-/// Under a rotation with a zero component (quarter turns, translations) an AABB's image is an
-/// AABB (the mapped corners); otherwise an OBB with axis q.
+/// Under a translation (q = (1, 0)) an AABB's image is an AABB (the mapped corners); under any
+/// other rotation, quarter turns included, an OBB with axis q, whose corners keep the AABB's
+/// numbering (feature.hpp: the ids name the stored box's features however it is turned). The
+/// centre and half extents are exact when min + max and max - min are (float boxes always).
 template <Scalar T, class F>
 decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
   const Vec2c lo = widen(s.min()), hi = widen(s.max());
-  if (x.q.x() == 0 || x.q.y() == 0) {
+  if (x.q.x() == 1 && x.q.y() == 0) {
     const Vec2c a = image_point(x, lo), b = image_point(x, hi);
     return f(ShapeAccess::aabb<Calc>(a.cwiseMin(b), b.cwiseMax(a)));
   }

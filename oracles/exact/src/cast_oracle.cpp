@@ -109,22 +109,6 @@ Core local_core(const Primitive<double>& s) {
   return c;
 }
 
-/// The primitives of a shape (itself, or a compound's children).
-boost::container::small_vector<Primitive<double>, 4> primitives(const Shape<double>& s) {
-  boost::container::small_vector<Primitive<double>, 4> out;
-  std::visit(
-      [&](const auto& x) {
-        using S = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<S, Compound<double>>) {
-          for (const Primitive<double>& c : x.children()) out.push_back(c);
-        } else {
-          out.push_back(Primitive<double>(x));
-        }
-      },
-      s);
-  return out;
-}
-
 /// The convex hull of a point set as a core (point, segment or counter-clockwise polygon).
 Core hull_of(Points pts, const NT& radius) {
   std::sort(pts.begin(), pts.end(), less_xy);
@@ -232,6 +216,27 @@ Core posed(const Core& c, const Vec2d& q, const Vec2d& p) {
   return hull_of(pts, c.radius);
 }
 
+/// The cores of a shape's primitives in its frame: itself, or a compound's children, each placed
+/// exactly by its child transform.
+boost::container::small_vector<Core, 4> cores_of(const Shape<double>& s) {
+  boost::container::small_vector<Core, 4> out;
+  std::visit(
+      [&](const auto& x) {
+        using S = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<S, Compound<double>>) {
+          for (std::size_t i = 0; i < x.children().size(); ++i) {
+            const Transform<double> t = x.child_transform(i);
+            const Core c = local_core(x.children()[i]);
+            out.push_back(t.is_identity() ? c : posed(c, t.rotation(), t.position()));
+          }
+        } else {
+          out.push_back(local_core(Primitive<double>(x)));
+        }
+      },
+      s);
+  return out;
+}
+
 }  // namespace
 
 namespace exact {
@@ -247,16 +252,16 @@ bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<do
   const P w{NT(va.x()) - NT(vb.x()), NT(va.y()) - NT(vb.y())};
   const P d0{w.x * NT(t0), w.y * NT(t0)}, d1{w.x * NT(t1), w.y * NT(t1)};
   const NT padn(std::max(pad, 0.0));
-  for (const Primitive<double>& x : primitives(a)) {
-    const Core ca = local_core(x);
+  const auto cb = cores_of(b);
+  for (const Core& ca : cores_of(a)) {
     Points swept;
     for (const P& p : ca.v) {
       swept.push_back({p.x + d0.x, p.y + d0.y});
       swept.push_back({p.x + d1.x, p.y + d1.y});
     }
     const Core sa = hull_of(swept, ca.radius);
-    for (const Primitive<double>& y : primitives(b)) {
-      if (within(sa, hull_of(local_core(y).v, local_core(y).radius), padn)) return true;
+    for (const Core& y : cb) {
+      if (within(sa, hull_of(y.v, y.radius), padn)) return true;
     }
   }
   return false;
@@ -266,10 +271,11 @@ bool meets_posed(const Shape<double>& a, const Vec2<double>& qa, const Vec2<doub
                  const Vec2<double>& qb, const Vec2<double>& pb, double pad) {
   require_finite(pad, "pad");
   const NT padn(std::max(pad, 0.0));
-  for (const Primitive<double>& x : primitives(a)) {
-    const Core ca = posed(local_core(x), qa, pa);
-    for (const Primitive<double>& y : primitives(b)) {
-      if (within(ca, posed(local_core(y), qb, pb), padn)) return true;
+  const auto cb = cores_of(b);
+  for (const Core& x : cores_of(a)) {
+    const Core ca = posed(x, qa, pa);
+    for (const Core& y : cb) {
+      if (within(ca, posed(y, qb, pb), padn)) return true;
     }
   }
   return false;

@@ -29,6 +29,10 @@ void write_shape_comment(std::ostream& out, const std::string& label, const Shap
     return;
   }
   for (double v : d.values) out << ' ' << detail::num(v);
+  if (d.placement) {
+    out << " at";
+    for (double v : d.placement->values) out << ' ' << detail::num(v);
+  }
   out << '\n';
 }
 
@@ -181,7 +185,7 @@ Case read_case(std::istream& in) {
     } else if (key == "kind") {
       std::string kind;
       ls >> kind;
-      c.a = ShapeData{at_line(line, [&] { return parse_kind(kind); }), {}, {}};
+      c.a = ShapeData{at_line(line, [&] { return parse_kind(kind); }), {}, {}, {}};
       have_a = true;
     } else if (key == "child") {
       if (children_left == 0 || open_compound == nullptr) throw CaseError(where() + "child line without a compound");

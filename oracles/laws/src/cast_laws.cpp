@@ -114,10 +114,15 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
       const double slack = 2 * eps + 16 * detail::eps<T>() * (L + p.cwiseAbs().maxCoeff()) + L / 32;
       // A compound: for some pair of children (the pair that met).
       bool sides = false;
-      for (const Primitive<T>& ca : detail::primitives_of(a)) {
-        for (const Primitive<T>& cb : detail::primitives_of(b)) {
-          sides = sides || (far_at(Vec2<double>(p + n * L), to_shape(ca), in.va, t, L - slack) &&
-                            far_at(Vec2<double>(p - n * L), to_shape(cb), in.vb, t, L - slack));
+      // Each child as its child transform places it (a compound of that one child).
+      const auto one = [](const auto& c) -> Shape<T> {
+        if (c.transform.is_identity()) return to_shape(c.shape);
+        return Compound<T>::make_placed({c}).value();
+      };
+      for (const auto& ca : detail::placed_primitives_of(a)) {
+        for (const auto& cb : detail::placed_primitives_of(b)) {
+          sides = sides || (far_at(Vec2<double>(p + n * L), one(ca), in.va, t, L - slack) &&
+                            far_at(Vec2<double>(p - n * L), one(cb), in.vb, t, L - slack));
         }
       }
       if (!sides) fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)", describe_result(r));

@@ -66,9 +66,13 @@ double point_bound(const Shape<T>& a, const Shape<T>& b, double separation) {
          2 * double(std::numeric_limits<T>::denorm_min());
 }
 
-/// The primitive a feature id's child index names (nullptr when the index is out of range).
+/// A primitive placed by its child transform (the identity outside compounds).
 template <Scalar T>
-const Primitive<T>* child_named(const std::vector<Primitive<T>>& prims, std::uint16_t child) {
+using Placed = typename Compound<T>::Child;
+
+/// The primitive a feature id's child index names (nullptr when the index is out of range).
+template <class P>
+const P* child_named(const std::vector<P>& prims, std::uint16_t child) {
   return child < prims.size() ? &prims[child] : nullptr;
 }
 
@@ -150,10 +154,10 @@ std::array<Vec2c, 2> surface_points(const Contact<T>& c, int i) {
 /// id names a child that does not exist.
 template <Scalar T>
 bool point_pair(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i,
-                const Primitive<T>*& pa, const Primitive<T>*& pb, std::vector<Primitive<T>>& ka,
-                std::vector<Primitive<T>>& kb) {
-  ka = detail::primitives_of(a);
-  kb = detail::primitives_of(b);
+                const Placed<T>*& pa, const Placed<T>*& pb, std::vector<Placed<T>>& ka,
+                std::vector<Placed<T>>& kb) {
+  ka = detail::placed_primitives_of(a);
+  kb = detail::placed_primitives_of(b);
   const FeatureId& id = c.ids[std::size_t(i)];
   pa = child_named(ka, id.child_a);
   pb = child_named(kb, id.child_b);
@@ -169,30 +173,30 @@ template <Scalar T>
 bool check_point_separation(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i) {
   const double s = c.separations[std::size_t(i)];
   if (!std::isfinite(s)) return !j.broken("a finite separation", "separation " + num(s));
-  const Primitive<T>*pa = nullptr, *pb = nullptr;
-  std::vector<Primitive<T>> ka, kb;
+  const Placed<T>*pa = nullptr, *pb = nullptr;
+  std::vector<Placed<T>> ka, kb;
   if (!point_pair(j, a, b, c, i, pa, pb, ka, kb)) return false;
   const double bound = point_bound(a, b, s);
   const std::array<Vec2c, 2> x = surface_points(c, i);
-  const Primitive<T>* prims[2] = {pa, pb};
+  const Placed<T>* prims[2] = {pa, pb};
   for (int k = 0; k < 2; ++k) {
-    const Primitive<T>& p = *prims[k];
+    const oracle::Placed p = oracle::placed(prims[k]->shape, prims[k]->transform);
     // A sharp surface passes through its surface point; a rounded one at least reaches it (its
     // surface at a tilted clipped face lies nearer than along the normal).
-    const bool ok = detail::is_rounded(p) ? oracle::contains(p, x[std::size_t(k)]) ||
-                                                oracle::compare_boundary_distance(p, x[std::size_t(k)], bound) <= 0
-                                          : detail::near_boundary(p, x[std::size_t(k)], bound);
+    const bool ok = detail::is_rounded(prims[k]->shape)
+                        ? oracle::contains(p, x[std::size_t(k)]) ||
+                              oracle::compare_boundary_distance(p, x[std::size_t(k)], bound) <= 0
+                        : detail::near_boundary(p, x[std::size_t(k)], bound);
     if (!ok) {
       return !j.broken("point " + std::to_string(i) + ": " + (k == 0 ? "a" : "b") + "'s surface point " +
                            (k == 0 ? "p - n s/2" : "p + n s/2") + " within " + num(bound) + " of its boundary",
                        "point " + vec(c.points[std::size_t(i)]) + ", separation " + num(s) + ", normal " +
                            vec(c.normal) + ": surface point " + vec(Vec2<double>(x[std::size_t(k)])) +
-                           " is farther (from " + describe(p) + ")");
+                           " is farther (from " + describe(prims[k]->shape, prims[k]->transform) + ")");
     }
   }
   // No point deeper than the exact depth of its pair (nor nearer than its exact gap).
-  const Shape<T> sa = std::visit([](const auto& q) { return Shape<T>(q); }, *pa);
-  const Shape<T> sb = std::visit([](const auto& q) { return Shape<T>(q); }, *pb);
+  const oracle::Placed sa = oracle::placed(pa->shape, pa->transform), sb = oracle::placed(pb->shape, pb->transform);
   if (s < 0 && -s - bound > 0 && oracle::compare_depth(sa, sb, -s - bound) < 0) {
     return !j.broken("point " + std::to_string(i) + " no deeper than the exact depth + " + num(bound),
                      "separation " + num(s) + ", exact depth ~" + num(-oracle::approx_signed_distance(sa, sb)));
@@ -209,25 +213,29 @@ bool check_point_separation(Judgement& j, const Shape<T>& a, const Shape<T>& b, 
 template <Scalar T>
 bool check_point_features(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i,
                           std::string& skipped) {
-  const Primitive<T>*pa = nullptr, *pb = nullptr;
-  std::vector<Primitive<T>> ka, kb;
+  const Placed<T>*pa = nullptr, *pb = nullptr;
+  std::vector<Placed<T>> ka, kb;
   if (!point_pair(j, a, b, c, i, pa, pb, ka, kb)) return false;
   const FeatureId& id = c.ids[std::size_t(i)];
   const std::array<Vec2c, 2> x = surface_points(c, i);
   const double bound = point_bound(a, b, c.separations[std::size_t(i)]) + 4 * double(c.depth);
-  const Primitive<T>* prims[2] = {pa, pb};
+  const Placed<T>* prims[2] = {pa, pb};
   const FeatureKind kinds[2] = {id.kind_a, id.kind_b};
   const unsigned index[2] = {id.index_a, id.index_b};
   for (int k = 0; k < 2; ++k) {
     FeatureShape f;
-    if (!feature_shape(*prims[k], kinds[k], index[k], f)) {
-      if (std::holds_alternative<Obb<T>>(*prims[k])) {
+    if (!feature_shape(prims[k]->shape, kinds[k], index[k], f)) {
+      if (std::holds_alternative<Obb<T>>(prims[k]->shape)) {
         skipped += " obb numbered along rounded corners";
         continue;
       }
       return !j.broken("point " + std::to_string(i) + "'s id names a feature of " + (k == 0 ? "a" : "b"),
                        std::string(kinds[k] == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(index[k]) +
-                           " of " + describe(*prims[k]));
+                           " of " + describe(prims[k]->shape, prims[k]->transform));
+    }
+    // The feature as its child transform places it (rounded in double: within the bound).
+    for (auto& seg : f.segments) {
+      for (Vec2c& q : seg) q = prims[k]->transform.apply(q);
     }
     double d = std::numeric_limits<double>::infinity();
     for (const auto& seg : f.segments) d = std::min(d, distance_to_segment(x[std::size_t(k)], seg));

@@ -4,7 +4,7 @@
 
 namespace collide::laws {
 
-using detail::primitives_of;
+using detail::placed_primitives_of;
 
 std::string_view name(Relation r) noexcept {
   switch (r) {
@@ -18,12 +18,9 @@ std::string_view name(Relation r) noexcept {
 
 namespace {
 
-/// inner lies inside the primitive outer: every vertex of inner's core is in outer with clearance
-/// inner's radius (outer is convex, inner is the convex hull of those discs).
-template <Scalar T>
-bool inside_primitive(const Primitive<T>& inner, const Primitive<T>& outer) {
-  const ::collide::detail::Core core =
-      std::visit([](const auto& s) { return ::collide::detail::core_of(s); }, inner);
+/// A core inside the placed primitive outer: every vertex of the core is in outer with clearance
+/// the core's radius (outer is convex, the inner shape is the convex hull of those discs).
+bool inside_placed(const ::collide::detail::Core& core, const oracle::Placed& outer) {
   for (const Vec2c& p : core.pts()) {
     if (!oracle::contains(outer, p)) return false;
     if (core.radius > 0 && oracle::compare_boundary_distance(outer, p, core.radius) < 0) return false;
@@ -31,13 +28,23 @@ bool inside_primitive(const Primitive<T>& inner, const Primitive<T>& outer) {
   return true;
 }
 
-/// Every primitive of inner inside one primitive of outer (for a compound outer, inside one child).
+/// Every primitive of inner inside one primitive of outer (for a compound outer, inside one
+/// child); children as their child transforms place them (inner's cores as imaged in double).
 template <Scalar T>
 bool contained_in(const Shape<T>& inner, const Shape<T>& outer) {
-  const std::vector<Primitive<T>> in = primitives_of(inner), out = primitives_of(outer);
-  for (const Primitive<T>& o : out) {
+  std::vector<::collide::detail::Core> in;
+  for (const auto& c : placed_primitives_of(inner)) {
+    std::visit(
+        [&](const auto& x) {
+          ::collide::detail::with_image(x, c.transform.pose(),
+                                        [&](const auto& img) { in.push_back(::collide::detail::core_of(img)); });
+        },
+        c.shape);
+  }
+  for (const auto& o : placed_primitives_of(outer)) {
+    const oracle::Placed po = oracle::placed(o.shape, o.transform);
     bool all = true;
-    for (const Primitive<T>& i : in) all = all && inside_primitive(i, o);
+    for (const ::collide::detail::Core& core : in) all = all && inside_placed(core, po);
     if (all) return true;
   }
   return false;

@@ -94,9 +94,9 @@ std::optional<Primitive<T>> eroded(const Primitive<T>& p, double e) {
 /// The segment [p, q] passes a point deeper than e inside s (checked on the erodable children).
 template <Scalar T>
 bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
-  for (const Primitive<T>& pr : detail::primitives_of(s)) {
-    const auto core = eroded(pr, e);
-    if (core && oracle::segment_meets(*core, p, q)) return true;
+  for (const auto& child : detail::placed_primitives_of(s)) {
+    const auto core = eroded(child.shape, e);
+    if (core && oracle::segment_meets(oracle::placed(*core, child.transform), p, q)) return true;
   }
   return false;
 }
@@ -105,13 +105,11 @@ bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
 /// boundary, inside that child), exactly: the origins for which the ray must hit at t = 0.
 template <Scalar T>
 bool deep_inside(const Shape<T>& s, const Vec2c& o, double bound) {
-  if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    for (const Primitive<T>& child : c->children()) {
-      if (oracle::contains(child, o) && oracle::compare_boundary_distance(child, o, bound) > 0) return true;
-    }
-    return false;
+  for (const auto& child : detail::placed_primitives_of(s)) {
+    const oracle::Placed x = oracle::placed(child.shape, child.transform);
+    if (oracle::contains(x, o) && oracle::compare_boundary_distance(x, o, bound) > 0) return true;
   }
-  return oracle::contains(s, o) && oracle::compare_boundary_distance(s, o, bound) > 0;
+  return false;
 }
 
 /// n is an outward unit normal of s's boundary at p (p within bound of s), within the bound: the
@@ -126,9 +124,10 @@ bool outward_normal(const Shape<T>& s, const Vec2c& p, const Vec2c& n, double bo
   const double length = std::max(size.maxCoeff(), 0x1p20 * bound);
   const double slack = 2 * bound + 4 * detail::eps<T>() * length;
   const Vec2c q = p + n * length;
-  for (const Primitive<T>& child : detail::primitives_of(s)) {
-    if (!detail::near_boundary(child, p, bound)) continue;
-    if (!oracle::contains(child, q) && oracle::compare_boundary_distance(child, q, length - slack) >= 0) return true;
+  for (const auto& child : detail::placed_primitives_of(s)) {
+    const oracle::Placed x = oracle::placed(child.shape, child.transform);
+    if (!detail::near_boundary(x, p, bound)) continue;
+    if (!oracle::contains(x, q) && oracle::compare_boundary_distance(x, q, length - slack) >= 0) return true;
   }
   return false;
 }
@@ -153,12 +152,14 @@ Verdict contains_law(const Shape<T>& s, const Vec2<T>& p) {
       v.relation = exact ? Relation::Contained : Relation::Separated;
       v.account += ", exact " + detail::yes(exact);
       if (got != exact) {
-        // A difference must come from a rounded child within the tolerance of its boundary.
+        // A difference must come from a rounded child (a round kind, or one placed by a child
+        // transform) within the tolerance of its boundary.
         const double tol = contains_tolerance(s, p);
         bool allowed = false;
-        for (const Primitive<T>& child : detail::primitives_of(s)) {
-          const bool rounded = !std::holds_alternative<Aabb<T>>(child) && !std::holds_alternative<ConvexPolygon<T>>(child);
-          allowed = allowed || (rounded && detail::near_boundary(child, q, tol));
+        for (const auto& child : detail::placed_primitives_of(s)) {
+          const bool rounded = !child.transform.is_identity() || (!std::holds_alternative<Aabb<T>>(child.shape) &&
+                                                                  !std::holds_alternative<ConvexPolygon<T>>(child.shape));
+          allowed = allowed || (rounded && detail::near_boundary(oracle::placed(child.shape, child.transform), q, tol));
         }
         v.disagreement = true;
         if (allowed) {

@@ -15,6 +15,7 @@
 
 namespace collide::laws::detail {
 
+using ::collide::laws::placed_primitives_of;
 using ::collide::laws::primitives_of;
 using ::collide::laws::turn;
 using ::collide::laws::turned;
@@ -67,21 +68,25 @@ std::string describe(const ConvexPolygon<T>& s) {
   }
   return out;
 }
+/// A primitive and its placement (a compound child and its transform): " at p=... q=..." unless
+/// the identity.
+template <Scalar T>
+std::string describe(const Primitive<T>& s, const Transform<T>& x) {
+  std::string out = std::visit([](const auto& c) { return describe(c); }, s);
+  if (!x.is_identity()) {
+    out += " at p=";
+    out += vec(x.position());
+    out += " q=";
+    out += vec(x.rotation());
+  }
+  return out;
+}
 template <Scalar T>
 std::string describe(const Compound<T>& s) {
   std::string out = "compound{";
-  bool first = true;
   for (std::size_t i = 0; i < s.children().size(); ++i) {
-    out += first ? "" : "; ";
-    first = false;
-    out += std::visit([](const auto& x) { return describe(x); }, s.children()[i]);
-    const Transform<T> x = s.child_transform(i);
-    if (!x.is_identity()) {
-      out += " at p=";
-      out += vec(x.position());
-      out += " q=";
-      out += vec(x.rotation());
-    }
+    out += i == 0 ? "" : "; ";
+    out += describe(s.children()[i], s.child_transform(i));
   }
   return out + "}";
 }
@@ -145,6 +150,11 @@ bool near_boundary(const Primitive<T>& s, const Vec2<double>& p, double d) {
   return oracle::compare_boundary_distance(s, p, d) <= 0;
 }
 
+/// p is within d of the boundary of a placed shape (a child placed by its transform), exactly.
+inline bool near_boundary(const oracle::Placed& s, const Vec2<double>& p, double d) {
+  return oracle::compare_boundary_distance(s, p, d) <= 0;
+}
+
 /// p is farther than d from the closed shape s, exactly. Asked through the point's distance to
 /// the boundary rather than to a zero-radius circle at p: a point of a shape near the range's
 /// edge (a ray hit, a contact point) may lie beyond max_magnitude, where no Circle can be built.
@@ -190,10 +200,23 @@ void positions(const Primitive<T>& p, std::vector<Vec2<T>>& pos, std::vector<T>&
       p);
 }
 
+/// A compound child placed by a transform: the transform's position is its position; its own
+/// values and the rotation move with it, so they count as shape-only values.
 template <Scalar T>
 void positions(const Shape<T>& s, std::vector<Vec2<T>>& pos, std::vector<T>& other) {
   if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    for (const Primitive<T>& p : c->children()) positions(p, pos, other);
+    for (std::size_t i = 0; i < c->children().size(); ++i) {
+      const Transform<T> x = c->child_transform(i);
+      if (x.is_identity()) {
+        positions(c->children()[i], pos, other);
+        continue;
+      }
+      pos.push_back(x.position());
+      other.insert(other.end(), {x.rotation().x(), x.rotation().y()});
+      std::vector<Vec2<T>> local;
+      positions(c->children()[i], local, other);
+      for (const Vec2<T>& q : local) other.insert(other.end(), {q.x(), q.y()});
+    }
     return;
   }
   std::visit(
@@ -204,9 +227,41 @@ void positions(const Shape<T>& s, std::vector<Vec2<T>>& pos, std::vector<T>& oth
       s);
 }
 
-/// moved is exactly s with every position moved by t (no rounding anywhere).
+/// A quarter turn stored exactly: q is (+-1, 0) or (0, +-1).
+template <Scalar T>
+bool quarter_turn(const Transform<T>& x) {
+  const T c = x.rotation().x(), s = x.rotation().y();
+  return (std::fabs(c) == T(1) && s == T(0)) || (c == T(0) && std::fabs(s) == T(1));
+}
+
+/// Every child of s (a compound) is imaged exactly in double: placed by the identity, or by a
+/// quarter turn whose sums (turned position + child position) do not round.
+template <Scalar T>
+bool exact_children(const Shape<T>& s) {
+  const auto* c = std::get_if<Compound<T>>(&s);
+  if (c == nullptr || !c->has_child_transforms()) return true;
+  for (std::size_t i = 0; i < c->children().size(); ++i) {
+    const Transform<T> x = c->child_transform(i);
+    if (x.is_identity()) continue;
+    if (!quarter_turn(x)) return false;
+    std::vector<Vec2<T>> pos;
+    std::vector<T> other;
+    positions(c->children()[i], pos, other);
+    for (const Vec2<T>& p : pos) {
+      const Vec2c r = x.rotate(widen(p));  // exact for a quarter turn
+      for (int k = 0; k < 2; ++k) {
+        if (!exact_sum(r[k], double(x.position()[k]), r[k] + double(x.position()[k]))) return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// moved is exactly s with every position moved by t (no rounding anywhere), and both are imaged
+/// exactly (exact_children), so the move is exact for the shapes the queries see.
 template <Scalar T>
 bool exact_move(const Shape<T>& s, const Shape<T>& moved, const Vec2<T>& t) {
+  if (!exact_children(s) || !exact_children(moved)) return false;
   std::vector<Vec2<T>> p0, p1;
   std::vector<T> o0, o1;
   positions(s, p0, o0);

@@ -143,7 +143,20 @@ bool draw_primitive(std::ostream& out, const View& v, const Primitive<T>& p, con
 template <Scalar T>
 bool draw_shape(std::ostream& out, const View& v, const Shape<T>& s, const Style& st) {
   bool tiny = false;
-  for (const Primitive<T>& p : detail::primitives_of(s)) tiny = draw_primitive(out, v, p, st) || tiny;
+  // Each primitive as placed: a child with a transform is drawn as its image (in double).
+  for (const auto& c : detail::placed_primitives_of(s)) {
+    if (c.transform.is_identity()) {
+      tiny = draw_primitive(out, v, c.shape, st) || tiny;
+      continue;
+    }
+    std::visit(
+        [&](const auto& x) {
+          ::collide::detail::with_image(x, c.transform.pose(), [&](const auto& img) {
+            tiny = draw_primitive(out, v, Primitive<double>(img), st) || tiny;
+          });
+        },
+        c.shape);
+  }
   return tiny;
 }
 

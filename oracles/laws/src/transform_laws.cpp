@@ -17,6 +17,7 @@ namespace collide::laws {
 
 using detail::describe;
 using detail::num;
+using detail::quarter_turn;
 using detail::vec;
 using detail::yes;
 
@@ -72,19 +73,24 @@ inline Relation placed_relation(const oracle::Placed& a, const oracle::Placed& b
   return oracle::within_band(a, b, 0.0) ? Relation::Touching : Relation::Overlapping;
 }
 
-/// A quarter turn stored exactly: q is (+-1, 0) or (0, +-1).
-template <Scalar T>
-bool quarter_turn(const Transform<T>& x) {
-  const T c = x.rotation().x(), s = x.rotation().y();
-  return (std::fabs(c) == T(1) && s == T(0)) || (c == T(0) && std::fabs(s) == T(1));
-}
 
 /// Every mapped coordinate of s's stored positions under x is exact in U (double: the images; T:
-/// the world shape a factory builds). Compounds with child transforms never count as exact.
+/// the world shape a factory builds). Compounds with child transforms never count as exact. An
+/// AABB turned (not only moved) is imaged as a box from its centre and half extents, which must
+/// be exact too.
 template <Scalar U, Scalar T>
 bool exact_image(const Shape<T>& s, const Transform<T>& x) {
   if (!quarter_turn(x)) return false;
   if (const auto* c = std::get_if<Compound<T>>(&s); c != nullptr && c->has_child_transforms()) return false;
+  if (x.rotation() != Vec2<T>(T(1), T(0))) {
+    for (const Primitive<T>& p : detail::primitives_of(s)) {
+      const auto* box = std::get_if<Aabb<T>>(&p);
+      for (int k = 0; box != nullptr && k < 2; ++k) {
+        const double lo = box->min()[k], hi = box->max()[k];
+        if (!detail::exact_sum(lo, hi, lo + hi) || !detail::exact_sum(hi, -lo, hi - lo)) return false;
+      }
+    }
+  }
   std::vector<Vec2<T>> pos;
   std::vector<T> other;
   detail::positions(s, pos, other);

@@ -12,8 +12,11 @@
 ///                             2 = from_corners:             p0 p1 p2 p3 (x y each)
 ///   polygon  count byte: low 4 bits = vertex count (0..15), bit 7 = make_hull instead of make;
 ///            then count points (the codec's x y per vertex)
-///   compound count byte (% 5 children; 0 is rejected as EmptyCompound); each child is a kind
-///            byte (% (kKindCount - 1): every kind but compound) and that kind's values.
+///   compound count byte (low 7 bits % 5 children; 0 is rejected as EmptyCompound; bit 7: each
+///            child is followed by its child transform, px py qx qy as decode_transform reads
+///            it); each child is a kind byte (% (kKindCount - 1): every kind but compound) and
+///            that kind's values.
+/// A transform (decode_transform): px py qx qy through make_with_rotation (codec.hpp).
 
 #include "collide/collide.hpp"
 #include "collide/fuzz/reader.hpp"
@@ -123,36 +126,42 @@ Expected<Primitive<T>> decode_primitive(Reader& r, Build how) {
   });
 }
 
-template <Scalar T>
-struct Decoder<ShapeKind::Compound, T> {
-  static constexpr std::size_t kMaxChildren = 4;
-  static Expected<Compound<T>> decode(Reader& r, Build how) {
-    const std::size_t n = r.byte() % (kMaxChildren + 1);
-    std::vector<Primitive<T>> children;
-    children.reserve(n);
-    // Read every child even after a rejection, so the bytes after the compound mean the same.
-    std::optional<ShapeError> first_error;
-    for (std::size_t i = 0; i < n; ++i) {
-      Expected<Primitive<T>> c = decode_primitive<T>(r, how);
-      if (c) {
-        children.push_back(std::move(c).value());
-      } else if (!first_error) {
-        first_error = c.error();
-      }
-    }
-    if (first_error) return *first_error;
-    return detail::build_with<Compound<T>>(
-        how, [&] { return Compound<T>::make(children); }, [&] { return Compound<T>(children); });
-  }
-  static constexpr bool stored_values(std::uint8_t) { return false; }
-};
-
 /// A transform's stored values px py qx qy (codec.hpp), through make_with_rotation().
 template <Scalar T>
 Expected<Transform<T>> decode_transform(Reader& r) {
   const std::array<T, 4> x = laws::read_transform_values<T>(r);
   return laws::TransformCodec::make<T>(std::span<const T, 4>(x));
 }
+
+template <Scalar T>
+struct Decoder<ShapeKind::Compound, T> {
+  static constexpr std::size_t kMaxChildren = 4;
+  static Expected<Compound<T>> decode(Reader& r, Build how) {
+    const std::uint8_t head = r.byte();
+    const std::size_t n = (head & 0x7f) % (kMaxChildren + 1);
+    const bool placed = (head & 0x80) != 0;
+    std::vector<typename Compound<T>::Child> children;
+    children.reserve(n);
+    // Read every child even after a rejection, so the bytes after the compound mean the same.
+    std::optional<ShapeError> first_error;
+    for (std::size_t i = 0; i < n; ++i) {
+      Expected<Primitive<T>> c = decode_primitive<T>(r, how);
+      const Expected<Transform<T>> x = placed ? decode_transform<T>(r) : Expected<Transform<T>>(Transform<T>());
+      if (c && x) {
+        children.push_back({std::move(c).value(), x.value()});
+      } else if (!first_error) {
+        first_error = c ? x.error() : c.error();
+      }
+    }
+    if (first_error) return *first_error;
+    if (placed) return Compound<T>::make_placed(std::move(children));  // no throwing form exists
+    std::vector<Primitive<T>> shapes;
+    for (auto& c : children) shapes.push_back(std::move(c.shape));
+    return detail::build_with<Compound<T>>(
+        how, [&] { return Compound<T>::make(shapes); }, [&] { return Compound<T>(shapes); });
+  }
+  static constexpr bool stored_values(std::uint8_t) { return false; }
+};
 
 /// Reads a kind byte and that kind's values.
 template <Scalar T>
@@ -168,27 +177,58 @@ Expected<Shape<T>> decode_shape(Reader& r, Build how = Build::Factory) {
 /// Flags byte at the start of every pair input.
 struct PairHeader {
   bool is_double;     ///< bit 0: scalar is double (else float)
-  std::uint8_t bits;  ///< the whole byte, for target-specific options in bits 1..7
+  bool placed;        ///< bit 6: a transform follows each shape (targets that place shapes)
+  std::uint8_t bits;  ///< the whole byte, for target-specific options in bits 1..5 and 7
 };
+
+/// The flags bit of PairHeader::placed.
+inline constexpr std::uint8_t kPlacedBit = 0x40;
+
+namespace detail {
+/// The one pair decoder: "flags byte, shape a (group 0) [its transform (group 4)], shape b
+/// (group 1) [its transform (group 5)]", the transforms read only when `placing` and the flags
+/// ask for them (identities otherwise; the mutator's touching moves only groups 0 and 1). Calls
+/// f(header, a, xa, b, xb, reader) when every part is valid; returns whether f was called.
+template <class F>
+bool decode_pair(Reader& r, bool placing, F&& f) {
+  const std::uint8_t flags = r.byte();
+  const PairHeader header{(flags & 1) != 0, (flags & kPlacedBit) != 0, flags};
+  auto run = [&]<Scalar T>() {
+    const bool with_transforms = placing && header.placed;
+    auto placement = [&](int group) {
+      r.set_group(group);
+      return with_transforms ? decode_transform<T>(r) : Expected<Transform<T>>(Transform<T>());
+    };
+    r.set_group(0);
+    Expected<Shape<T>> a = decode_shape<T>(r);
+    const Expected<Transform<T>> xa = placement(4);
+    r.set_group(1);
+    Expected<Shape<T>> b = decode_shape<T>(r);
+    const Expected<Transform<T>> xb = placement(5);
+    r.set_group(2);
+    if (!a || !b || !xa || !xb) return false;
+    f(header, a.value(), xa.value(), b.value(), xb.value(), r);
+    return true;
+  };
+  return header.is_double ? run.template operator()<double>() : run.template operator()<float>();
+}
+}  // namespace detail
 
 /// Decodes "flags byte, shape a (group 0), shape b (group 1)" and calls
 /// f(header, a, b, reader) with Shape<float> or Shape<double> shapes when both are valid; the
 /// reader is left after b for targets that read more. Returns whether f was called.
 template <class F>
 bool with_pair(Reader& r, F&& f) {
-  const std::uint8_t flags = r.byte();
-  const PairHeader header{(flags & 1) != 0, flags};
-  auto run = [&]<Scalar T>() {
-    r.set_group(0);
-    Expected<Shape<T>> a = decode_shape<T>(r);
-    r.set_group(1);
-    Expected<Shape<T>> b = decode_shape<T>(r);
-    r.set_group(2);
-    if (!a || !b) return false;
-    f(header, a.value(), b.value(), r);
-    return true;
-  };
-  return header.is_double ? run.template operator()<double>() : run.template operator()<float>();
+  return detail::decode_pair(r, false, [&](const PairHeader& h, const auto& a, const auto&, const auto& b,
+                                           const auto&, Reader& rest) { f(h, a, b, rest); });
+}
+
+/// As with_pair, for targets that place shapes: with flags bit 6 each shape is followed by its
+/// transform (decode_transform; a rejected transform makes the pair invalid), and f is called
+/// as f(header, a, xa, b, xb, reader) (identities without bit 6).
+template <class F>
+bool with_placed_pair(Reader& r, F&& f) {
+  return detail::decode_pair(r, true, f);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -256,10 +296,18 @@ std::string describe(const ConvexPolygon<T>& s) {
   return out;
 }
 template <Scalar T>
+std::string describe(const Transform<T>& x) {
+  std::string out = "transform";
+  detail::add(out, " position ", format_point(widen(x.position())));
+  detail::add(out, " rotation ", format_point(widen(x.rotation())));
+  return out;
+}
+template <Scalar T>
 std::string describe(const Compound<T>& s) {
   std::string out = "compound {";
-  for (const Primitive<T>& c : s.children()) {
-    detail::add(out, "\n    ", std::visit([](const auto& x) { return describe(x); }, c));
+  for (std::size_t i = 0; i < s.children().size(); ++i) {
+    detail::add(out, "\n    ", std::visit([](const auto& x) { return describe(x); }, s.children()[i]));
+    if (!s.child_transform(i).is_identity()) detail::add(out, " at ", describe(s.child_transform(i)));
   }
   out += "\n  }";
   return out;

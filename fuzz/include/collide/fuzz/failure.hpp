@@ -128,6 +128,17 @@ template <class... Parts>
   std::abort();
 }
 
+/// A broken transform law (laws.hpp, law 10) on shapes placed by transforms: the account with
+/// both placed shapes, and the raw input kept as the regression input (fail_raw).
+template <Scalar T>
+void require_placed(std::string_view law, const laws::Verdict& v, const Shape<T>& a, const Transform<T>& xa,
+                    const std::optional<Shape<T>>& b = std::nullopt, const Transform<T>& xb = Transform<T>()) {
+  if (v.ok) return;
+  fail_raw("law '", law, "' broken (", scalar_name<T>(), ")\n  a: ", describe(a), "\n  xa: ", describe(xa),
+           b ? cat("\n  b: ", describe(*b), "\n  xb: ", describe(xb)) : std::string(), "\n  expected: ", v.expected,
+           "\n  got:      ", v.got, "\n  account:  ", v.account);
+}
+
 /// Checks a law's verdict: a broken law fails; an allowed disagreement passes.
 template <Scalar T>
 void require(laws::Law law, const laws::Verdict& v, const Shape<T>& a, const std::optional<Shape<T>>& b) {

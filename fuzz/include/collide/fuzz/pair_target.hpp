@@ -21,6 +21,14 @@ auto pair_only(F&& f) {
   return [&](const PairHeader&, const auto& a, const auto& b, Reader&) { f(a, b); };
 }
 
+/// Wraps a callback f(a, xa, b, xb) as the callback with_placed_pair expects.
+template <class F>
+auto placed_pair_only(F&& f) {
+  return [&](const PairHeader&, const auto& a, const auto& xa, const auto& b, const auto& xb, Reader&) {
+    f(a, xa, b, xb);
+  };
+}
+
 /// std::optional holding b, for laws that take an optional second shape.
 template <Scalar T>
 std::optional<Shape<T>> some(const Shape<T>& s) {
@@ -60,6 +68,19 @@ std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t m
 #else
 #define COLLIDE_PAIR_MUTATOR(decode_case)
 #endif
+/// As COLLIDE_PAIR_FUZZ_TARGET for a target whose decode_case(reader, f) calls f(a, xa, b, xb)
+/// (with_placed_pair) and whose check takes the shapes with their transforms; the mutator sees the
+/// stored shapes.
+#define COLLIDE_PLACED_PAIR_FUZZ_TARGET(decode_case, check)                                           \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                 \
+    ::collide::fuzz::current_input() = {data, size};                                                  \
+    ::collide::fuzz::Reader r(data, size);                                                            \
+    decode_case(r, [](const auto& a, const auto& xa, const auto& b, const auto& xb) { check(a, xa, b, xb); }); \
+    return 0;                                                                                         \
+  }                                                                                                   \
+  COLLIDE_PAIR_MUTATOR(([](::collide::fuzz::Reader& r, auto&& f) {                                   \
+    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&) { f(a, b); });         \
+  }))
 #define COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)                                                   \
   extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                 \
     ::collide::fuzz::current_input() = {data, size};                                                  \

@@ -75,16 +75,19 @@ struct Rule {
   std::vector<Error> errors;  ///< the errors a rejection may name (empty with may_be_valid: valid)
 };
 
-/// A shape as raw stored values, independent of the scalar (values as exact doubles).
-struct ShapeData {
-  ShapeKind kind = ShapeKind::Circle;  ///< the kind
-  std::vector<double> values;          ///< in the kind's field order (Vertices: per vertex)
-  std::vector<ShapeData> children;     ///< a compound's children
-};
-
 /// A transform as raw stored values: px py qx qy (position, rotation as cosine and sine).
 struct TransformData {
   std::array<double, 4> values{};  ///< px, py, qx, qy
+  /// Same stored values.
+  friend bool operator==(const TransformData&, const TransformData&) = default;
+};
+
+/// A shape as raw stored values, independent of the scalar (values as exact doubles).
+struct ShapeData {
+  ShapeKind kind = ShapeKind::Circle;      ///< the kind
+  std::vector<double> values;              ///< in the kind's field order (Vertices: per vertex)
+  std::vector<ShapeData> children;         ///< a compound's children
+  std::optional<TransformData> placement;  ///< a compound child's transform (absent: the identity)
 };
 
 /// Per kind: Layout, fields, sample values (a shape of size about 1 around the origin, exact in
@@ -353,62 +356,6 @@ S valid(Expected<S> r) {
 
 }  // namespace codec_detail
 
-/// The stored values of a primitive or of any shape (a compound: its children's).
-template <Scalar T>
-ShapeData to_data(const Shape<T>& s) {
-  return std::visit(
-      [](const auto& x) -> ShapeData {
-        constexpr ShapeKind K = kind_of_v<std::remove_cvref_t<decltype(x)>>;
-        ShapeData d;
-        d.kind = K;
-        if constexpr (Codec<K>::layout == Layout::Children) {
-          for (const Primitive<T>& p : x.children()) d.children.push_back(to_data(to_shape(p)));
-        } else {
-          for (T v : Codec<K>::template values<T>(x)) d.values.push_back(double(v));
-        }
-        return d;
-      },
-      s);
-}
-
-/// Rebuilds the shape with exactly the stored bits through the kind's factory. Throws
-/// CodecError when the values do not make that shape: a wrong count, a value not representable
-/// in T, the factory's named error, or a shape whose stored values differ from the given ones
-/// (an OBB axis that is not unit, a polygon not in normal form).
-template <Scalar T>
-Shape<T> from_data(const ShapeData& d) {
-  return visit_kind(d.kind, [&]<ShapeKind K>() -> Shape<T> {
-    using codec_detail::valid;
-    codec_detail::check_count(K, d.values.size());
-    if constexpr (Codec<K>::layout == Layout::Children) {
-      if (d.children.empty()) throw CodecError(std::string(name(K)) + " needs at least one child");
-      std::vector<Primitive<T>> children;
-      for (const ShapeData& c : d.children) {
-        if (c.kind == K) throw CodecError(std::string("a ") + std::string(name(K)) + " cannot be a child");
-        std::visit(
-            [&](const auto& x) {
-              if constexpr (std::is_constructible_v<Primitive<T>, decltype(x)>) children.emplace_back(x);
-            },
-            from_data<T>(c));
-      }
-      return valid(ShapeOf<K, T>::make(std::move(children)));
-    } else {
-      const std::vector<T> x = codec_detail::narrow_all<T>(d.values);
-      const ShapeOf<K, T> s = valid(Codec<K>::template make<T>(std::span<const T>(x)));
-      if (Codec<K>::template values<T>(s) != x) {
-        std::string stored;
-        for (T v : Codec<K>::template values<T>(s)) {
-          stored += ' ';
-          stored += codec_detail::hex(double(v));
-        }
-        throw CodecError(std::string("stored ") + std::string(name(K)) +
-                         " values are not kept by its factory (rebuilt as" + stored + ")");
-      }
-      return s;
-    }
-  });
-}
-
 /// The stored values of a transform.
 template <Scalar T>
 TransformData to_data(const Transform<T>& xf) {
@@ -428,11 +375,77 @@ Transform<T> transform_from_data(const TransformData& d) {
   return xf;
 }
 
+/// The stored values of a primitive or of any shape (a compound: its children's).
+template <Scalar T>
+ShapeData to_data(const Shape<T>& s) {
+  return std::visit(
+      [](const auto& x) -> ShapeData {
+        constexpr ShapeKind K = kind_of_v<std::remove_cvref_t<decltype(x)>>;
+        ShapeData d;
+        d.kind = K;
+        if constexpr (Codec<K>::layout == Layout::Children) {
+          for (std::size_t i = 0; i < x.children().size(); ++i) {
+            d.children.push_back(to_data(to_shape(x.children()[i])));
+            const Transform<T> placement = x.child_transform(i);
+            if (!placement.is_identity()) d.children.back().placement = TransformCodec::values(placement);
+          }
+        } else {
+          for (T v : Codec<K>::template values<T>(x)) d.values.push_back(double(v));
+        }
+        return d;
+      },
+      s);
+}
+
+/// Rebuilds the shape with exactly the stored bits through the kind's factory. Throws
+/// CodecError when the values do not make that shape: a wrong count, a value not representable
+/// in T, the factory's named error, or a shape whose stored values differ from the given ones
+/// (an OBB axis that is not unit, a polygon not in normal form).
+template <Scalar T>
+Shape<T> from_data(const ShapeData& d) {
+  return visit_kind(d.kind, [&]<ShapeKind K>() -> Shape<T> {
+    using codec_detail::valid;
+    codec_detail::check_count(K, d.values.size());
+    if constexpr (Codec<K>::layout == Layout::Children) {
+      if (d.children.empty()) throw CodecError(std::string(name(K)) + " needs at least one child");
+      if (d.placement) throw CodecError(std::string("a ") + std::string(name(K)) + " has no placement of its own");
+      std::vector<typename ShapeOf<K, T>::Child> children;
+      for (const ShapeData& c : d.children) {
+        if (c.kind == K) throw CodecError(std::string("a ") + std::string(name(K)) + " cannot be a child");
+        ShapeData local = c;
+        local.placement.reset();
+        const Transform<T> placement = c.placement ? transform_from_data<T>(*c.placement) : Transform<T>();
+        std::visit(
+            [&](const auto& x) {
+              if constexpr (std::is_constructible_v<Primitive<T>, decltype(x)>) children.push_back({x, placement});
+            },
+            from_data<T>(local));
+      }
+      return valid(ShapeOf<K, T>::make_placed(std::move(children)));
+    } else {
+      if (d.placement) throw CodecError("only a compound child has a placement");
+      const std::vector<T> x = codec_detail::narrow_all<T>(d.values);
+      const ShapeOf<K, T> s = valid(Codec<K>::template make<T>(std::span<const T>(x)));
+      if (Codec<K>::template values<T>(s) != x) {
+        std::string stored;
+        for (T v : Codec<K>::template values<T>(s)) {
+          stored += ' ';
+          stored += codec_detail::hex(double(v));
+        }
+        throw CodecError(std::string("stored ") + std::string(name(K)) +
+                         " values are not kept by its factory (rebuilt as" + stored + ")");
+      }
+      return s;
+    }
+  });
+}
+
 // ---------------------------------------------------------------------------------------------
 // Stored values <-> text: "<kind> [count] values..." with hex floats; a compound is
 // "compound N" followed by N lines "<child_key> <kind> values...".
 
-/// Writes `head <kind> ...` and, for a compound, its child lines (`child <kind> ...`).
+/// Writes `head <kind> ...` and, for a compound, its child lines (`child <kind> ...`, ending in
+/// `at px py qx qy` for a child placed by a transform other than the identity).
 inline void write_text(std::ostream& out, std::string_view head, const ShapeData& d) {
   const KindCodec c = codec_of(d.kind);
   out << head << ' ' << name(d.kind);
@@ -443,6 +456,10 @@ inline void write_text(std::ostream& out, std::string_view head, const ShapeData
   }
   if (c.layout == Layout::Vertices) out << ' ' << d.values.size() / c.fields.size();
   for (double v : d.values) out << ' ' << codec_detail::hex(v);
+  if (d.placement) {
+    out << " at";
+    for (double v : d.placement->values) out << ' ' << codec_detail::hex(v);
+  }
   out << '\n';
 }
 
@@ -461,9 +478,22 @@ inline ShapeKind parse_kind(const std::string& tok) {
   return *k;
 }
 
+/// Reads "px py qx qy"; the line must end there.
+inline TransformData read_transform_text(std::istream& in) {
+  TransformData d;
+  std::string tok;
+  for (double& v : d.values) {
+    if (!(in >> tok)) throw CodecError("a transform needs px py qx qy");
+    v = parse_value(tok);
+  }
+  if (in >> tok) throw CodecError("extra value '" + tok + "'");
+  return d;
+}
+
 /// Reads the values of `kind` after its name from a line (Vertices: the vertex count first;
 /// Children: the child count, returned in `children` for the caller to read that many lines).
-/// The line must end there.
+/// A child line (no `children` pointer) may end in `at px py qx qy`, its placement. The line
+/// must end there.
 inline ShapeData read_text(std::istream& in, ShapeKind kind, std::size_t* children = nullptr) {
   const KindCodec c = codec_of(kind);
   ShapeData d;
@@ -484,9 +514,13 @@ inline ShapeData read_text(std::istream& in, ShapeKind kind, std::size_t* childr
   std::string tok;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(in >> tok)) throw CodecError("too few values");
+    if (tok == "at") throw CodecError("too few values before 'at'");
     d.values.push_back(parse_value(tok));
   }
-  if (in >> tok) throw CodecError("extra value '" + tok + "'");
+  if (in >> tok) {
+    if (tok != "at" || children != nullptr) throw CodecError("extra value '" + tok + "'");
+    d.placement = read_transform_text(in);
+  }
   return d;
 }
 
@@ -495,18 +529,6 @@ inline void write_text(std::ostream& out, std::string_view head, const Transform
   out << head;
   for (double v : d.values) out << ' ' << codec_detail::hex(v);
   out << '\n';
-}
-
-/// Reads "px py qx qy"; the line must end there.
-inline TransformData read_transform_text(std::istream& in) {
-  TransformData d;
-  std::string tok;
-  for (double& v : d.values) {
-    if (!(in >> tok)) throw CodecError("a transform needs px py qx qy");
-    v = parse_value(tok);
-  }
-  if (in >> tok) throw CodecError("extra value '" + tok + "'");
-  return d;
 }
 
 // ---------------------------------------------------------------------------------------------

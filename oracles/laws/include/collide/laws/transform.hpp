@@ -27,6 +27,20 @@ std::vector<Primitive<T>> primitives_of(const Shape<T>& s) {
       s)};
 }
 
+/// The primitives of a shape, each with its placement in the shape's frame: a compound's children
+/// with their child transforms, or the shape itself with the identity. A placed primitive is
+/// queried through the transformed overloads (transformed.hpp) and judged by oracle::placed().
+template <Scalar T>
+std::vector<typename Compound<T>::Child> placed_primitives_of(const Shape<T>& s) {
+  std::vector<typename Compound<T>::Child> out;
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    for (std::size_t i = 0; i < c->children().size(); ++i) out.push_back({c->children()[i], c->child_transform(i)});
+    return out;
+  }
+  for (const Primitive<T>& p : primitives_of(s)) out.push_back({p, Transform<T>()});
+  return out;
+}
+
 /// Quarter turns (x, y) -> (-y, x), k times, then x -> -x when mirror. Exact.
 template <Scalar T>
 Vec2<T> turn(const Vec2<T>& p, int quarter_turns, bool mirror) {
@@ -64,13 +78,24 @@ Primitive<T> turned(const Primitive<T>& p, int k, bool m) {
       p);
 }
 
-/// Any shape turned; a compound child by child.
+/// A child transform turned with its child: x(c) turned is x'(turned c), with x' at the turned
+/// position and, under the mirror, the conjugate rotation (quarter turns commute with rotations,
+/// a mirror reverses them). Exact: the rotation keeps its length bit for bit.
+template <Scalar T>
+Transform<T> turned(const Transform<T>& x, int k, bool m) {
+  if (x.is_identity()) return x;
+  const Vec2<T> q = x.rotation();
+  return Transform<T>::make_with_rotation(turn(x.position(), k, m), m ? Vec2<T>(q.x(), -q.y()) : q).value();
+}
+
+/// Any shape turned; a compound child by child, each with its child transform.
 template <Scalar T>
 Shape<T> turned(const Shape<T>& s, int k, bool m) {
   if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    std::vector<Primitive<T>> children;
-    for (const Primitive<T>& p : c->children()) children.push_back(turned(p, k, m));
-    return Compound<T>(std::move(children));
+    std::vector<typename Compound<T>::Child> children;
+    for (std::size_t i = 0; i < c->children().size(); ++i)
+      children.push_back({turned(c->children()[i], k, m), turned(c->child_transform(i), k, m)});
+    return Compound<T>::make_placed(std::move(children)).value();
   }
   return std::visit(
       [&](const auto& x) -> Shape<T> {
