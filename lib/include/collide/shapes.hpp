@@ -36,6 +36,14 @@ inline bool check_value(T v, long index, ShapeError* out) noexcept {
   return true;
 }
 
+/// True when every value is finite and within max_magnitude<T>() (check_values() without the error).
+template <Scalar T>
+inline bool values_in_range(std::initializer_list<T> values) noexcept {
+  bool ok = true;
+  for (T v : values) ok = ok && std::fabs(v) <= max_magnitude<T>();  // false for NaN
+  return ok;
+}
+
 template <Scalar T>
 inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexcept {
   long i = 0;
@@ -43,6 +51,15 @@ inline bool check_values(std::initializer_list<T> values, ShapeError* out) noexc
     if (!check_value(v, i++, out)) return false;
   }
   return true;
+}
+
+inline ShapeError placeholder_error();
+/// The error check_values() names for values that values_in_range() rejects.
+template <Scalar T>
+ShapeError range_error(std::initializer_list<T> values) {
+  ShapeError e = placeholder_error();
+  check_values<T>(values, &e);
+  return e;
 }
 
 /// v / |v| for a finite v, or nullopt for the zero vector. v is first scaled by a power of two
@@ -56,8 +73,18 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
   return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
+/// The unit outward normal of a counter-clockwise polygon's edge from a to b, computed in double
+/// (one square root; an edge whose squared length would underflow or overflow is scaled first).
+inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {
+  const Vec2c d = b - a;
+  const Calc dd = d.squaredNorm();
+  if (dd > 0x1p-1000 && dd < 0x1p1000) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
+  return normalized(Vec2c(d.y(), -d.x())).value_or(Vec2c::Zero());
+}
+
 struct Unchecked {};
 struct ObbAccess;
+struct PolygonAccess;
 struct AabbAccess;
 struct ShapeAccess;
 
@@ -391,6 +418,7 @@ class ConvexPolygon {
     if (poly.size_ > kInline) poly.heap_.resize(poly.size_);
     Vec2<T>* out = poly.size_ > kInline ? poly.heap_.data() : poly.inline_.data();
     for (std::size_t k = 0; k < idx.size(); ++k) out[k] = vertices[idx[k]];
+    poly.cache_normals();
     return poly;
   }
   /// Convex hull of any point set (monotone chain on the exact orient(); collinear points on the
@@ -445,11 +473,31 @@ class ConvexPolygon {
 
  private:
   friend struct detail::ShapeAccess;
+  friend struct detail::PolygonAccess;
   ConvexPolygon() = default;
+  /// Every edge's unit outward normal, for the contact paths (polygons of at most kInline vertices).
+  void cache_normals() noexcept {
+    if (size_ > kInline) return;
+    for (std::size_t k = 0; k < size_; ++k) normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[(k + 1) % size_]));
+    normals_cached_ = true;
+  }
   std::array<Vec2<T>, kInline> inline_{};
   std::vector<Vec2<T>> heap_;
   std::size_t size_ = 0;
+  std::array<Vec2c, kInline> normals_{};
+  bool normals_cached_ = false;
 };
+
+namespace detail {
+/// A polygon's cached edge normals (detail::edge_normal of each edge, bit for bit), or nullptr
+/// when it has none: more than kInline vertices, or an image computed for one query.
+struct PolygonAccess {
+  template <Scalar T>
+  static const Vec2c* normals(const ConvexPolygon<T>& s) noexcept {
+    return s.normals_cached_ ? s.normals_.data() : nullptr;
+  }
+};
+}  // namespace detail
 
 /// One child of a compound: any shape but a compound.
 template <Scalar T>

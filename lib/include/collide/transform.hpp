@@ -56,13 +56,14 @@ class Transform {
   /// The identity: position (0, 0), rotation (1, 0). World-space queries mean this transform.
   constexpr Transform() noexcept : p_(Vec2<T>::Zero()), q_(T(1), T(0)) {}
 
-  /// Position and counter-clockwise angle in radians; q = (cos angle, sin angle) rounded to T.
+  /// Position and counter-clockwise angle in radians; q = (cos angle, sin angle) computed by T's
+  /// own cos and sin (each within one unit in the last place of T, so |q|^2 is within 4 eps_T of
+  /// 1). q is what the transform means: the exact image uses it as stored.
   /// Errors: NonFinite, OutOfRange (index 0, 1 = position, 2 = angle).
   static Expected<Transform> make(const Vec2<T>& position, T angle) noexcept {
-    ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>({position.x(), position.y(), angle}, &e)) return e;
-    const Calc a = static_cast<Calc>(angle);
-    return Transform(position, Vec2<T>(static_cast<T>(std::cos(a)), static_cast<T>(std::sin(a))));
+    if (!detail::values_in_range<T>({position.x(), position.y(), angle})) [[unlikely]]
+      return detail::range_error<T>({position.x(), position.y(), angle});
+    return Transform(position, Vec2<T>(std::cos(angle), std::sin(angle)));
   }
 
   /// Position and rotation given as a direction (the image of the local x axis). A vector whose
@@ -71,8 +72,8 @@ class Transform {
   /// double, then rounded to T) rather than rejected, as Obb::make_with_axis does.
   /// Errors: NonFinite, OutOfRange (index 0, 1 = position, 2, 3 = rotation), ZeroRotation.
   static Expected<Transform> make_with_rotation(const Vec2<T>& position, const Vec2<T>& rotation) noexcept {
-    ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>({position.x(), position.y(), rotation.x(), rotation.y()}, &e)) return e;
+    if (!detail::values_in_range<T>({position.x(), position.y(), rotation.x(), rotation.y()})) [[unlikely]]
+      return detail::range_error<T>({position.x(), position.y(), rotation.x(), rotation.y()});
     const Vec2c r = widen(rotation);
     if (std::fabs(r.squaredNorm() - 1) <= 4 * Calc(std::numeric_limits<T>::epsilon()))
       return Transform(position, rotation);
@@ -90,8 +91,7 @@ class Transform {
   /// moving between frames). Errors: NonFinite, OutOfRange (index 0, 1).
   Expected<Transform> moved(const Vec2<T>& v) const noexcept {
     const Vec2<T> p = p_ + v;
-    ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>({p.x(), p.y()}, &e)) return e;
+    if (!detail::values_in_range<T>({p.x(), p.y()})) [[unlikely]] return detail::range_error<T>({p.x(), p.y()});
     return Transform(p, q_);
   }
 

@@ -110,7 +110,7 @@ struct IncidentFace {
 /// anti-parallel as the best up to rounding (a polygon side split by a vertex one ulp off the
 /// line), the one that spans most of the reference face: the other may lie beside it entirely,
 /// and clipping would then find nothing.
-inline IncidentFace find_incident_face(const ReferenceFace& f) {
+inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_normals = nullptr) {
   const Core& inc = *f.inc;
   IncidentFace out;
   if (inc.size() == 1) {
@@ -126,6 +126,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f) {
   }
   std::array<Calc, 8> dots{};  // the alignments of the first 8 faces, computed once
   auto anti_parallel = [&](std::size_t j) {
+    if (inc_normals) return inc_normals[j].dot(f.normal);
     if (j < dots.size() && dots[j] != 0) return dots[j];
     const Vec2c e = inc[(j + 1) % inc.size()] - inc[j];
     const Calc dot = Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
@@ -243,8 +244,10 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   return witness;
 }
 
-/// Steps 2 to 6 from the axis of least penetration of two cores known to overlap.
-inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& ax, Calc speculative = 0) {
+/// Steps 2 to 6 from the axis of least penetration of two cores known to overlap. normals_p and
+/// normals_q: each core's unit edge normals when known (else nullptr: computed where needed).
+inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& ax, Calc speculative = 0,
+                                     const Vec2c* normals_p = nullptr, const Vec2c* normals_q = nullptr) {
   CoreContact out;
   out.normal = ax.normal;
   out.depth = std::max(Calc(0), ax.depth);
@@ -256,7 +259,7 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
     return out;
   }
   const ReferenceFace f = find_reference_face(p, q, ax);
-  IncidentFace face = find_incident_face(f);
+  IncidentFace face = find_incident_face(f, ax.owner == 0 ? normals_q : normals_p);
   if (clip_to_reference_face(face, f)) keep_points_within_reach(face, f, out, speculative);
   if (out.count == 0) {
     unsigned deepest = 0;

@@ -26,11 +26,13 @@
 namespace collide::detail {
 
 /// A box or polygon core with the unit outward normal of each edge. Box normals come from the
-/// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are computed
-/// from its edges when asked (most pairs apart stop at the first face).
+/// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are those it
+/// cached at construction, or computed from its edges when asked (an image built for one query:
+/// most pairs apart stop at the first face).
 struct Hull {
   Core core;
   std::array<Vec2c, 4> box_normals;
+  const Vec2c* cached = nullptr;  ///< the polygon's cached normals, if any
   bool box = false;
   Calc scale = 0;  ///< the largest absolute coordinate of the core
   /// Pushes the points and sets scale.
@@ -44,19 +46,63 @@ struct Hull {
     }
     scale = m;
   }
+  /// Every edge's normal when known without computing (a box, a polygon's cache), else nullptr.
+  const Vec2c* normals() const noexcept { return box ? box_normals.data() : cached; }
   Vec2c normal(std::size_t i) const {
-    if (box) return box_normals[i];
-    const Vec2c d = core[(i + 1) % core.size()] - core[i];
-    const Calc dd = d.squaredNorm();
-    if (dd > 0x1p-1000 && dd < 0x1p1000) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
-    return unit_of(Vec2c(d.y(), -d.x()));
+    if (const Vec2c* n = normals()) return n[i];
+    return edge_normal(core[i], core[(i + 1) % core.size()]);
   }
 };
+
+/// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root.
+inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
+  const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
+  if (m >= 0x1p-500 && m <= 0x1p500) [[likely]] return d / dist;
+  return unit_of(d);
+}
 
 /// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
 /// scale s: every value entering it carries a few roundings of s (corners, differences, dots),
 /// below 32 units; 64 are used.
 inline Calc band_of(Calc s) noexcept { return kOverlapErrorFactor * kUnitRoundoff * s; }
+
+/// A box around a box or polygon, in double: exact for an AABB and a polygon, within a few
+/// roundings of its largest coordinate for an OBB (its extents computed from the axis).
+struct RoughBox {
+  Vec2c lo, hi;
+};
+template <Scalar T>
+RoughBox rough_box(const Aabb<T>& s) noexcept {
+  return {widen(s.min()), widen(s.max())};
+}
+template <Scalar T>
+RoughBox rough_box(const Obb<T>& s) noexcept {
+  const Vec2c c = widen(s.center()), u = widen(s.axis()).cwiseAbs();
+  const Calc hx = s.half_extents().x(), hy = s.half_extents().y();
+  const Vec2c ext(u.x() * hx + u.y() * hy, u.y() * hx + u.x() * hy);
+  return {c - ext, c + ext};
+}
+template <Scalar T>
+RoughBox rough_box(const ConvexPolygon<T>& s) noexcept {
+  Vec2<T> lo = s[0], hi = s[0];
+  for (const Vec2<T>& p : s.vertices()) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {widen(lo), widen(hi)};
+}
+
+/// Whether the rough boxes of a and b are apart by more than the speculative distance plus the
+/// band of their scale along an axis (an axis gap is at most the distance): then so are a and b,
+/// and no contact exists. False for tiny pairs, whose roundings underflow.
+template <class A, class B>
+bool apart_by_boxes(const A& a, const B& b, Calc speculative) noexcept {
+  const RoughBox p = rough_box(a), q = rough_box(b);
+  const Calc scale = std::max({p.lo.cwiseAbs().maxCoeff(), p.hi.cwiseAbs().maxCoeff(), q.lo.cwiseAbs().maxCoeff(),
+                               q.hi.cwiseAbs().maxCoeff()});
+  const Calc reach = band_of(scale) + std::max(speculative, Calc(0));
+  return scale >= kTinyCore && (((q.lo - p.hi).array() > reach).any() || ((p.lo - q.hi).array() > reach).any());
+}
 
 /// Builds h from a box whose core is a proper rectangle; false for a box flat on an axis.
 template <Scalar T>
@@ -92,6 +138,7 @@ template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   if (s.size() > ConvexPolygon<T>::kInline) return false;
   h.push_all(s.vertices());
+  h.cached = PolygonAccess::normals(s);
   return true;
 }
 
@@ -120,14 +167,16 @@ std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculat
 
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
 /// centres (within rounding) give normal (1, 0), as contact_cores() does.
+/// sign: filtered_sign_dist2() of the pair (kept out of line, so that the filter before it
+/// inlines into the caller).
 template <Scalar T>
-std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_circles(const Circle<T>& a, const Circle<T>& b, int sign,
+                                                             Calc speculative) {
   const Vec2c ca = widen(a.center()), cb = widen(b.center());
   const Calc ra = a.radius(), rb = b.radius();
+  const Vec2c d = cb - ca;
   const Calc s = std::max(ca.cwiseAbs().maxCoeff(), cb.cwiseAbs().maxCoeff());
   if (!(std::max({s, ra, rb}) >= kTinyCore)) return contact_generic(a, b, speculative);
-  const Vec2c d = cb - ca;
-  int sign = filtered_sign_dist2(d.x(), d.y(), ra + rb);
   if (sign == 2) sign = decide::circle_circle(a, b) ? -1 : 1;
   if (sign > 0 && !(speculative > 0)) return std::nullopt;
   const Calc d2 = d.squaredNorm();
@@ -155,43 +204,105 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
   }
   return out;
 }
+template <Scalar T>
+std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
+  const Vec2c d = widen(b.center()) - widen(a.center());
+  // The filter is proven at every scale: a pair it finds apart needs nothing else.
+  const int sign = filtered_sign_dist2(d.x(), d.y(), Calc(a.radius()) + Calc(b.radius()));
+  if (sign == 1 && !(speculative > 0)) return std::nullopt;
+  return contact_circles(a, b, sign, speculative);
+}
 
-/// Circle against a box or a polygon h (b is the shape, for the exact decision): the centre's
-/// excess over each face line, then the closest point of the boundary when the centre is outside.
-template <Scalar T, class B>
-std::optional<CoreContact> contact_circle_hull(const Circle<T>& a, const B& b, const Hull& h, Calc speculative) {
+/// Circle against a polygon of at most 8 vertices, on its vertices and edge normals (cached, or
+/// computed when asked): the centre's excess over each face line (beyond r, the speculative
+/// distance and the band of that face's values: apart), then, with the centre inside, the face
+/// it is least deep behind, and outside, the closest point of the boundary.
+/// Kept out of line, so that the test of circle_beyond_a_face() before it inlines into the caller.
+template <Scalar T>
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
+                                                                    Calc speculative) {
+  const std::size_t m = b.size();
+  std::array<Vec2c, ConvexPolygon<T>::kInline> v;  // widened as the faces are visited
+  const Vec2c* cached = PolygonAccess::normals(b);
+  const auto normal = [&](std::size_t i) { return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % m])); };
   const Vec2c c = widen(a.center());
-  const Calc r = a.radius();
-  const Calc band = band_of(std::max({c.cwiseAbs().maxCoeff(), r, h.scale}));
-  // The face of largest excess; any face beyond r (plus speculative) by more than the band separates.
-  Calc excess = -std::numeric_limits<Calc>::infinity();
+  const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0)), own = std::max(c.cwiseAbs().maxCoeff(), r);
+  Calc excess = -std::numeric_limits<Calc>::infinity(), scale = own;
   unsigned face = 0;
-  const Calc beyond = r + std::max(speculative, Calc(0)) + band;
-  for (std::size_t i = 0; i < h.core.size(); ++i) {
-    const Calc e = (c - h.core[i]).dot(h.normal(i));
-    if (e > beyond) return std::nullopt;
+  for (std::size_t i = 0; i < m; ++i) {
+    v[i] = widen(b[i]);
+    const Calc e = (c - v[i]).dot(normal(i));
+    // The excess is within a few roundings of |c| + |v_i|; tiny values underflow instead.
+    const Calc si = std::max(own, v[i].cwiseAbs().maxCoeff());
+    scale = std::max(scale, si);
+    if (e > reach && si >= kTinyCore && e > reach + band_of(si)) return std::nullopt;
     if (e > excess) {
       excess = e;
       face = unsigned(i);
     }
   }
-  const Core pc = core_of(a);
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Calc band = band_of(scale);
+  const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  };
   if (!(excess > 0)) {
-    // The centre inside: certain when inside by more than the band.
-    if (excess < -band || decide_exactly(a, b)) {
-      return contact_from_axis(pc, h.core, Axis{Vec2c(-h.normal(face)), r - excess, 1, face}, speculative);
-    }
-    return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
+    // The centre inside (certain when inside by more than the band): the face it is least deep
+    // behind is the reference face, the centre its one incident point (as contact_from_axis()).
+    if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
+    const Vec2c n = normal(face);
+    CoreContact out;
+    out.count = 1;
+    out.normal = -n;
+    out.depth = std::max(Calc(0), r - excess);
+    out.points[0] = c + n * ((-excess - r) * 0.5);
+    out.separations[0] = excess - r;
+    out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+    return out;
   }
   // The closest point of the boundary lies on the face of largest excess or a neighbour: every
   // excess is at most the distance, and the closest feature's faces attain it.
   Closest cl;
-  closest_of_points_to_edges(cl, pc.pts(), h.core.pts(), false, face + h.core.size() - 1, 3);
-  const Calc gap = norm_of(cl.on_q - cl.on_p) - r;
+  closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false, face + m - 1, 3);
+  const Vec2c dq = cl.on_q - cl.on_p;
+  const Calc dist = norm_of(dq), gap = dist - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
-  if (!overlapping) return speculative > 0 ? speculative_contact_cores(pc, h.core, speculative) : std::nullopt;
-  if (const std::optional<CoreContact> k = contact_from_closest(pc, h.core, cl)) return k;
-  return contact_from_axis(pc, h.core, least_penetration(pc, h.core), speculative);
+  if (!overlapping) return speculative_or_none();
+  if (!(dist > band)) {
+    // A gap at the level of rounding has no reliable direction: the faces decide (contact_cores).
+    const Core pc = core_of(a), pb = core_of(b);
+    return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
+  }
+  // As contact_from_closest(): the normal along the closest points, one point midway.
+  CoreContact out;
+  out.count = 1;
+  out.normal = direction_of(dq, dist);
+  out.depth = std::max(Calc(0), r - dist);
+  out.points[0] = ((c + out.normal * r) + cl.on_q) * 0.5;
+  out.separations[0] = gap;
+  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  return out;
+}
+
+/// Whether the circle's centre lies beyond a face of the polygon (by its cached normals) by more
+/// than the radius, the speculative distance and the band of that face's values: then they are
+/// apart by more than the speculative distance. False for a polygon without cached normals.
+template <Scalar T>
+bool circle_beyond_a_face(const Circle<T>& a, const ConvexPolygon<T>& b, Calc speculative) noexcept {
+  const Vec2c* n = PolygonAccess::normals(b);
+  if (!n) return false;
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0));
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2c v = widen(b[i]);
+    const Calc e = (c - v).dot(n[i]);
+    if (e > reach) {
+      // The excess is within a few roundings of |c| + |v|; tiny values underflow instead.
+      const Calc scale = std::max({c.cwiseAbs().maxCoeff(), r, v.cwiseAbs().maxCoeff()});
+      if (scale >= kTinyCore && e > reach + band_of(scale)) return true;
+    }
+  }
+  return false;
 }
 
 /// A box as a centre c, a stored axis w (|w| = 1 up to T's rounding) and half extents along w and
@@ -216,20 +327,41 @@ bool rect_of(const Obb<T>& s, Rect& k) {
 
 /// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
 /// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
-/// (feature.hpp numbering); a centre inside takes the face it is least deep behind.
+/// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
+/// is not proper (see rect_of) takes the generic path unless the centre is clearly beyond a face.
+/// The rounding scale of a circle (centre c, radius r) and a box: their largest coordinate.
+inline Calc rect_scale(const Vec2c& c, Calc r, const Rect& k) noexcept {
+  return std::max({c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * std::max(k.w.squaredNorm(), Calc(1))});
+}
+
+/// Whether the circle's centre lies beyond a face of the box by more than r plus the speculative
+/// distance and the band of the pair's scale (at least kTinyCore): then they are apart by more
+/// than the speculative distance. The excess over a face is (|s| - hx |w|^2) / |w| with s the
+/// centre's coordinate times |w|^2, compared without the square root (|w| <= max(|w|^2, 1)).
+inline bool circle_beyond_rect(const Vec2c& c, Calc r, const Rect& k, Calc speculative, Calc scale) noexcept {
+  const Calc ww = k.w.squaredNorm();
+  const Vec2c d = c - k.c;
+  const Calc sw = d.dot(k.w), tw = d.dot(perp(k.w));
+  const Calc reach = r + std::max(speculative, Calc(0)) + band_of(scale);
+  return std::max(std::fabs(sw) - k.hx * ww, std::fabs(tw) - k.hy * ww) > reach * std::max(ww, Calc(1));
+}
+
+/// Kept out of line, so that the test of circle_beyond_rect() before it inlines into the caller.
 template <Scalar T, class B>
-std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k,
+                                                                 bool proper, Calc speculative) {
   const Vec2c c = widen(a.center());
   const Calc r = a.radius();
-  const Vec2c v = perp(k.w);
-  const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
-  const Vec2c d = c - k.c;
-  const Calc s = d.dot(k.w) / ww, t = d.dot(v) / ww;  // the centre's box coordinates
-  const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
-  const Calc scale = std::max({c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * len});
+  const Calc scale = rect_scale(c, r, k);
   if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  if (circle_beyond_rect(c, r, k, speculative, scale)) return std::nullopt;
+  if (!proper) return contact_generic(a, b, speculative);
   const Calc band = band_of(scale);
-  if (std::max(ex, ey) * len - r > std::max(speculative, Calc(0)) + band) return std::nullopt;
+  const Vec2c v = perp(k.w), d = c - k.c;
+  const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
+  const Calc sw = d.dot(k.w), tw = d.dot(v);
+  const Calc s = sw / ww, t = tw / ww;
+  const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
   CoreContact out;
   out.count = 1;
   if (ex > 0 || ey > 0) {
@@ -244,7 +376,7 @@ std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, c
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
       const unsigned side = ex > 0 ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
       out.ids[0] = id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
-      out.normal = unit_of(dq);
+      out.normal = direction_of(dq, dist);
       out.overlapping = overlapping;
       out.separations[0] = overlapping ? gap : std::max(gap, Calc(0));
       out.depth = std::max(Calc(0), -out.separations[0]);
@@ -270,13 +402,18 @@ std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, c
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
 /// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
-/// certain above the band plus 2 ties.
+/// certain above the band plus 2 ties. Boxes flat on an axis or thinner than their rounding, polygons of more than 8 vertices and
+/// tiny pairs take the generic path. Kept out of line, so that apart_by_boxes() before it inlines
+/// into the caller.
 template <class A, class B>
-std::optional<CoreContact> contact_hulls(const A& a, const Hull& ha, const B& b, const Hull& hb, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_hulls(const A& a, const B& b, Calc speculative) {
+  Hull ha, hb;
+  if (!(hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore))
+    return contact_generic(a, b, speculative);
   const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * scale;
   const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
   const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
-  if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative);
+  if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative, ha.normals(), hb.normals());
   return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
 }
 
@@ -293,15 +430,17 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
       // Boxes flat on an axis or thinner than their rounding take the generic path.
       Rect k;
-      if (rect_of(b, k)) return contact_circle_rect(a, b, k, speculative);
+      const bool proper = rect_of(b, k);
+      const Vec2c c = widen(a.center());
+      const Calc scale = rect_scale(c, a.radius(), k);
+      if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
+      return contact_circle_rect(a, b, k, proper, speculative);
     } else if constexpr (circle_a) {
-      Hull hb;
-      const Calc s = std::max({widen(a.center()).cwiseAbs().maxCoeff(), Calc(a.radius())});
-      if (hull_of(b, hb) && std::max(s, hb.scale) >= kTinyCore) return contact_circle_hull(a, b, hb, speculative);
+      if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
+      if (b.size() <= ConvexPolygon<scalar_of_t<A>>::kInline) return contact_circle_polygon(a, b, speculative);
     } else {
-      Hull ha, hb;
-      if (hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore)
-        return contact_hulls(a, ha, b, hb, speculative);
+      if (apart_by_boxes(a, b, speculative)) return std::nullopt;
+      return contact_hulls(a, b, speculative);
     }
   }
   return contact_generic(a, b, speculative);

@@ -41,7 +41,7 @@ class Core {
     big_.push_back(p);
     ++n_;
   }
-  std::array<Vec2c, 8> small_{};
+  std::array<Vec2c, 8> small_;  // entries past n_ are never read
   std::vector<Vec2c> big_;
   std::size_t n_ = 0;
 };
@@ -275,13 +275,14 @@ inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts
                                        bool swap, std::size_t first = 0, std::size_t count = 8) noexcept {
   {
     const std::size_t n = edges.size();
+    const std::size_t start = n <= 2 ? 0 : first % n;  // indices wrap by subtraction, not division
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const Vec2c& v = pts[k];
       const std::size_t m = n == 1 ? 1 : (n == 2 ? 1 : std::min(n, count));
       for (std::size_t j = 0; j < m; ++j) {
-        const std::size_t i = n <= 2 ? j : (first + j) % n;
+        const std::size_t i = start + j < n ? start + j : start + j - n;
         const Vec2c& a = edges[i];
-        const Vec2c& b = edges[(i + 1) % n];
+        const Vec2c& b = edges[i + 1 < n ? i + 1 : 0];
         const Vec2c d = b - a;
         const Calc dd = d.squaredNorm();
         const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
