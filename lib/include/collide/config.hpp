@@ -59,6 +59,11 @@ inline constexpr Calc kPlainNormHigh = 0x1p500;
 /// the exact fallback decides instead.
 inline constexpr Calc kFilterFloor = 0x1p-900;
 
+/// orient()'s expansion arithmetic (predicates.hpp) needs every non-zero coordinate within this
+/// factor of the largest (its products, after scaling, stay normal doubles); wider spreads are
+/// evaluated in exact binary arithmetic instead.
+inline constexpr Calc kExpansionSpread = 0x1p-995;
+
 /// Absolute error of one rounded product whose result underflows: 32 units of the smallest
 /// subnormal, a wide margin over the half unit a subnormal product can lose.
 inline constexpr Calc kProductUnderflow = 0x1p-1069;

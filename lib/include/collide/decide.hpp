@@ -115,11 +115,11 @@ int sign_line_dist2_minus(const P& p, const Vec2c& a, const Vec2c& b, const Radi
 /// sign of dx^2 + dy^2 - r^2 when a static bound proves it, else 2. dx, dy and r each carry at
 /// most one rounding of the exact values; the computed difference is then within
 /// 5.02 u (dx^2 + dy^2 + r^2) of the exact one (u = 2^-53), below the 8 u used. Sums below
-/// 2^-960 are left undecided: an underflowing square breaks the relative bound.
+/// kFilterFloor are left undecided: an underflowing square breaks the relative bound.
 inline int filtered_sign_dist2(Calc dx, Calc dy, Calc r) noexcept {
   const Calc l = dx * dx + dy * dy, q = r * r;
   const Calc m = l + q, d = l - q;
-  if (m > 0x1p-960) [[likely]] {
+  if (m > kFilterFloor) [[likely]] {
     const Calc bound = 8 * kUnitRoundoff * m;
     if (d > bound) return 1;
     if (-d > bound) return -1;

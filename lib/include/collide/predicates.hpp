@@ -286,13 +286,12 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
                              std::fabs(c.x()), std::fabs(c.y())});
   if (m == 0.0) return 0;
   ++detail::exact_evaluations;
-  // The expansion needs every non-zero coordinate within 2^-995 of the largest (products after
-  // scaling stay normal); wider spreads are evaluated in exact binary arithmetic.
+  // The expansion needs every non-zero coordinate within kExpansionSpread of the largest.
   double lo = m;
   for (const double v : {a.x(), a.y(), b.x(), b.y(), c.x(), c.y()}) {
     if (v != 0.0) lo = std::min(lo, std::fabs(v));
   }
-  if (lo < 0x1p-995 * m) {
+  if (lo < kExpansionSpread * m) {
     using detail::Exact;
     const Exact ax(a.x()), ay(a.y());
     return ((Exact(b.x()) - ax) * (Exact(c.y()) - ay) - (Exact(b.y()) - ay) * (Exact(c.x()) - ax)).sign();

@@ -78,7 +78,7 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
 inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {
   const Vec2c d = b - a;
   const Calc dd = d.squaredNorm();
-  if (dd > 0x1p-1000 && dd < 0x1p1000) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
+  if (dd > kUnderflowMargin && dd < kOverflowMargin) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
   return normalized(Vec2c(d.y(), -d.x())).value_or(Vec2c::Zero());
 }
 

@@ -57,7 +57,7 @@ struct Hull {
 /// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root.
 inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
   const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
-  if (m >= 0x1p-500 && m <= 0x1p500) [[likely]] return d / dist;
+  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]] return d / dist;
   return unit_of(d);
 }
 
@@ -122,7 +122,7 @@ bool hull_of(const Obb<T>& s, Hull& h) {
   const Calc hmin = std::min(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
   const Calc hmax = std::max(Calc(s.half_extents().x()), Calc(s.half_extents().y()));
   const Vec2c c = widen(s.center()), w = widen(s.axis());
-  if (!(hmin > 0x1p-40 * (c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000)) return false;
+  if (!(hmin > kThinBoxRatio * (c.cwiseAbs().maxCoeff() + hmax) && hmin > kUnderflowMargin)) return false;
   // The corners as core_of() computes them (it keeps them in this order for such a box).
   const Vec2c ex = w * Calc(s.half_extents().x()), ey = perp(w) * Calc(s.half_extents().y());
   h.push_all(std::array<Vec2c, 4>{c - ex - ey, c + ex - ey, c + ex + ey, c - ex + ey});
@@ -180,7 +180,7 @@ template <Scalar T>
   if (sign == 2) sign = decide::circle_circle(a, b) ? -1 : 1;
   if (sign > 0 && !(speculative > 0)) return std::nullopt;
   const Calc d2 = d.squaredNorm();
-  const bool plain = d2 > 0x1p-1000 && d2 < 0x1p1000;  // no underflow or overflow in the square
+  const bool plain = d2 > kUnderflowMargin && d2 < kOverflowMargin;  // no underflow or overflow in the square
   const Calc dist = plain ? std::sqrt(d2) : norm_of(d);
   CoreContact out;
   out.count = 1;
@@ -322,7 +322,7 @@ template <Scalar T>
 bool rect_of(const Obb<T>& s, Rect& k) {
   k = {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
   const Calc hmin = std::min(k.hx, k.hy), hmax = std::max(k.hx, k.hy);
-  return hmin > 0x1p-40 * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > 0x1p-1000;
+  return hmin > kThinBoxRatio * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > kUnderflowMargin;
 }
 
 /// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
