@@ -9,8 +9,8 @@
 /// random, aimed from one shape's inside to the other's (a head-on hit), or grazing: the pair is
 /// placed touching exactly, a moved back along a direction tangent to the contact (it touches at
 /// one instant or slides along a face) or along the normal (it meets head-on at a known time),
-/// sometimes at high speed over a short interval (a bullet through a thin sliver). Two motions in
-/// three are then seen from another frame: the shapes become local shapes placed by transforms
+/// sometimes at high speed over a short interval (a bullet through a thin sliver). Four motions in
+/// nine are then seen from another frame: the shapes become local shapes placed by transforms
 /// (one transform for both, which keeps the aimed relation up to the images' rounding, or each
 /// its own for random motions), the velocities turned with them; compounds sometimes carry child
 /// transforms (quarter turns that keep the shape exactly, or any transform for random motions).
@@ -127,7 +127,8 @@ Motion<T> gen_world_motion(ShapeKind ka, ShapeKind kb) {
   return {moved(a, back), b, {va, Vec2<T>(0, 0), max_t}, true};
 }
 
-/// A motion, in world space one time in three, otherwise placed_motion().
+/// A motion: in world space one time in three, otherwise through placed_motion() (which keeps
+/// world space one time in three too).
 template <Scalar T>
 Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
   const bool world = *rc::gen::inRange(0, 3) == 0;
