@@ -4,8 +4,10 @@
 A contact_raycast input is a pair followed by a ray (origin x y, direction x y, max_t); read by
 `cast`, the same five scalars are va, vb and max_t: every ray seed is a motion seed. Each chosen
 seed is written three ways: as it is, with the grazing bit (flags bit 2: a moved back along the
-tangent of its contact so that the pair passes within touching at max_t / 2), and with the two
-turns of time_of_impact appended (a quarter turn of a, half a turn back of b).
+tangent of its contact so that the pair passes within touching at max_t / 2), with the two
+turns of time_of_impact appended (a quarter turn of a, half a turn back of b), and with the turns
+and a transform for each shape (flags bits 3 and 4: a placed by a quarter turn, b by a rounded
+rotation), once plainly and once grazing.
 
 usage: fuzz/make_cast_corpus.py [--count N]   (writes fuzz/corpus/cast/c-*.bin)
 """
@@ -32,7 +34,11 @@ def main() -> int:
             continue
         fmt = "<d" if data[0] & 1 else "<f"
         turns = struct.pack(fmt, 1.5707963267948966) + struct.pack(fmt, -3.141592653589793)
-        for variant in (data, bytes([data[0] | 4]) + data[1:], data + turns):
+        xa = b"".join(struct.pack(fmt, v) for v in (0.5, -0.25, 0.0, 1.0))
+        xb = b"".join(struct.pack(fmt, v) for v in (-1.0, 2.0, 0.6, 0.8))
+        placed = data[1:] + turns + xa + xb
+        for variant in (data, bytes([data[0] | 4]) + data[1:], data + turns, bytes([data[0] | 24]) + placed,
+                        bytes([data[0] | 28]) + placed):
             name = "c-" + hashlib.sha1(variant).hexdigest()[:16] + ".bin"
             (out / name).write_bytes(variant)
             written += 1

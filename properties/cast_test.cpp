@@ -10,7 +10,11 @@
 /// random, aimed from one shape's inside to the other's (a head-on hit), or grazing: the pair is
 /// placed touching exactly, a moved back along a direction tangent to the contact (it touches at
 /// one instant or slides along a face) or along the normal (it meets head-on at a known time),
-/// sometimes at high speed over a short interval (a bullet through a thin sliver).
+/// sometimes at high speed over a short interval (a bullet through a thin sliver). Four motions in
+/// nine are then seen from another frame: the shapes become local shapes placed by transforms
+/// (one transform for both, which keeps the aimed relation up to the images' rounding, or each
+/// its own for random motions), the velocities turned with them; compounds sometimes carry child
+/// transforms (quarter turns that keep the shape exactly, or any transform for random motions).
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -37,6 +41,7 @@ template <Scalar T>
 struct Motion {
   Shape<T> a, b;
   laws::CastInput<T> in;
+  bool aimed = false;  ///< the pair's relation matters (head-on, grazing)
 };
 
 /// v scaled so that it is exact in T (components rounded to T).
@@ -56,8 +61,42 @@ double pair_size(const Shape<T>& a, const Shape<T>& b) {
   return m;
 }
 
+/// A compound whose children are stored turned back by a quarter turn and placed by that quarter
+/// turn: the same world shape, exactly (other shapes as they are).
 template <Scalar T>
-Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
+Shape<T> with_quarter_child_transforms(const Shape<T>& s) {
+  const auto* c = std::get_if<Compound<T>>(&s);
+  if (c == nullptr || !*rc::gen::arbitrary<bool>()) return s;
+  using V = Vec2<T>;
+  const std::array<V, 4> quarter = {V(1, 0), V(0, 1), V(-1, 0), V(0, -1)};
+  std::vector<typename Compound<T>::Child> kids;
+  for (const Primitive<T>& p : c->children()) {
+    const int k = *rc::gen::inRange(0, 4);
+    kids.push_back({laws::turned(p, 4 - k, false), Transform<T>::make_with_rotation(V(0, 0), quarter[std::size_t(k)]).value()});
+  }
+  return Compound<T>::make_placed(std::move(kids)).value();
+}
+
+/// The motion seen from another frame (see the top of this file); aimed: the relation of the
+/// pair matters, so both shapes get one transform and child transforms keep the shapes.
+template <Scalar T>
+Motion<T> placed_motion(Motion<T> m, bool aimed) {
+  const int how = *rc::gen::inRange(0, 3);
+  if (how == 0) return m;
+  const double s = scale_of_pair(m.a, m.b);
+  m.a = aimed ? with_quarter_child_transforms(m.a) : with_child_transforms(m.a, s);
+  m.b = aimed ? with_quarter_child_transforms(m.b) : with_child_transforms(m.b, s);
+  const Transform<T> x = gen_transform<T>(s);
+  m.in.xa = x;
+  m.in.xb = aimed || how == 1 ? x : gen_transform<T>(s);
+  m.in.va = to_t<T>(x.rotate(widen(m.in.va)));
+  m.in.vb = to_t<T>(x.rotate(widen(m.in.vb)));
+  return m;
+}
+
+/// A motion in world space: random, aimed, or grazing / head-on (see the top of this file).
+template <Scalar T>
+Motion<T> gen_world_motion(ShapeKind ka, ShapeKind kb) {
   const int style = *rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {4, 2}});
   const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.25), T(1), T(1), T(4)});
   const double speed_scale = std::ldexp(1.0, *rc::gen::weightedElement<int>({{6, 0}, {1, 8}, {1, 20}}));
@@ -66,13 +105,13 @@ Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
     const double s = pair_size(a, b);
     const Vec2<T> va = to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8 * speed_scale));
     const Vec2<T> vb = *rc::gen::arbitrary<bool>() ? Vec2<T>(0, 0) : to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8));
-    return {a, b, {va, vb, max_t}};
+    return {a, b, {va, vb, max_t}, false};
   }
   if (style == 1) {  // aimed: from a's inside toward b's, arriving around t = max_t / 2 .. 2 max_t
     auto [a, b] = gen_pair<T>(ka, kb, Placement::Separated);
     const Vec2c d = inner_point(b) - inner_point(a);
     const double k = double(*rc::gen::inRange(1, 9)) / 4 / double(max_t);
-    return {a, b, {to_t<T>(d * k * speed_scale), Vec2<T>(0, 0), max_t}};
+    return {a, b, {to_t<T>(d * k * speed_scale), Vec2<T>(0, 0), max_t}, true};
   }
   // Grazing and head-on through a touching placement: a moved back along v by v * tc.
   auto [a, b] = gen_pair<T>(ka, kb, Placement::Touching);
@@ -87,7 +126,16 @@ Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
   const Vec2<T> va = to_t<T>(v);
   const double tc = double(max_t) * double(*rc::gen::inRange(1, 9)) / 8;
   const Vec2<T> back = to_t<T>(-widen(va) * tc);
-  return {moved(a, back), b, {va, Vec2<T>(0, 0), max_t}};
+  return {moved(a, back), b, {va, Vec2<T>(0, 0), max_t}, true};
+}
+
+/// A motion: in world space one time in three, otherwise through placed_motion() (which keeps
+/// world space one time in three too).
+template <Scalar T>
+Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
+  const bool world = *rc::gen::inRange(0, 3) == 0;
+  const Motion<T> m = gen_world_motion<T>(ka, kb);
+  return world ? m : placed_motion(m, m.aimed);
 }
 
 /// A sweep for the time-of-impact law: centre of rotation at an inner point, angle 0 at time 0
@@ -152,6 +200,8 @@ laws::Case motion_case(laws::Law law, const Motion<T>& m, const laws::Verdict& v
   c.vbx = m.in.vb.x();
   c.vby = m.in.vb.y();
   c.max_t = m.in.max_t;
+  if (!m.in.xa.is_identity()) c.transform_a = laws::to_data(m.in.xa);
+  if (!m.in.xb.is_identity()) c.transform_b = laws::to_data(m.in.xb);
   return c;
 }
 

@@ -23,12 +23,6 @@
 namespace collide::props {
 namespace {
 
-/// The scale of a pair (its largest coordinate, at least 2^-20), for transforms at its scale.
-template <Scalar T>
-double scale_of_pair(const Shape<T>& a, const Shape<T>& b) {
-  return std::max({::collide::detail::box_scale(bounds(a)), ::collide::detail::box_scale(bounds(b)), 0x1p-20});
-}
-
 std::string g_last;                // the failing verdict's account, printed once per test
 std::optional<laws::Case> g_case;  // the last failing input (after shrinking), saved once per test
 

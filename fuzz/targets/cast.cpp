@@ -7,6 +7,9 @@
 // by half of max_t, so the shapes pass each other at about max_t / 2), shape a, shape b, then
 // va x y, vb x y, max_t, and the turns of a and b for time_of_impact (a's sweep: centre of
 // rotation at the local origin, moving by va over the step and turning by its angle; b's by vb).
+// Flags bit 3: a transform for a follows (px py qx qy, through make_with_rotation), bit 4: one
+// for b: the shapes are then local, placed by them (a transform that is not made stays the
+// identity); time of impact uses the local shapes as they are.
 
 #include "collide/fuzz/pair_target.hpp"
 #include "collide/laws/laws.hpp"
@@ -17,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 namespace {
 
@@ -43,17 +47,28 @@ MotionCase<T> read_motion(Reader& r) {
   return m;
 }
 
+/// The optional transforms after the motion (flags bits 3 and 4).
+template <Scalar T>
+void read_transforms(Reader& r, std::uint8_t bits, laws::CastInput<T>& in) {
+  for (const auto& [bit, x] : {std::pair{8, &in.xa}, std::pair{16, &in.xb}}) {
+    if ((bits & bit) == 0) continue;
+    const Expected<Transform<T>> made = decode_transform<T>(r);
+    if (made) *x = *made;
+  }
+}
+
 /// Calls f(a, b, motion) with a valid pair and the motion read after it; the grazing bit aims a.
 template <class F>
 void decode_case(Reader& r, F&& f) {
   with_pair(r, [&](const PairHeader& h, const auto& a, const auto& b, Reader& rest) {
     using T = scalar_of_t<std::remove_cvref_t<decltype(a)>>;
     MotionCase<T> m = read_motion<T>(rest);
+    read_transforms<T>(rest, h.bits, m.in);
     if ((h.bits & 4) == 0) {
       f(a, b, m);
       return;
     }
-    const auto c = contact(a, b);
+    const auto c = contact(a, m.in.xa, b, m.in.xb);
     const Vec2c va = widen(m.in.va), vb = widen(m.in.vb);
     if (!c || !va.allFinite() || !vb.allFinite() || !std::isfinite(double(m.in.max_t))) {
       f(a, b, m);
@@ -63,9 +78,15 @@ void decode_case(Reader& r, F&& f) {
     const Vec2c v = tangent * va.norm() + n * vb.y();
     m.in.va = v.template cast<T>();
     m.in.vb = Vec2<T>(0, 0);
-    const auto back = translated(a, Vec2<T>((-widen(m.in.va) * (double(m.in.max_t) / 2)).template cast<T>()));
-    if (back) {
-      f(back.value(), b, m);
+    const Vec2<T> back((-widen(m.in.va) * (double(m.in.max_t) / 2)).template cast<T>());
+    if (!m.in.xa.is_identity()) {  // a placed: its transform moves back
+      if (const auto x = m.in.xa.moved(back)) m.in.xa = *x;
+      f(a, b, m);
+      return;
+    }
+    const auto moved = translated(a, back);
+    if (moved) {
+      f(moved.value(), b, m);
     } else {
       f(a, b, m);
     }
@@ -88,7 +109,7 @@ bool valid_motion(const laws::CastInput<T>& in) {
 template <Scalar T>
 void check(const Shape<T>& a, const Shape<T>& b, const MotionCase<T>& m) {
   if (!valid_motion(m.in)) {
-    if (shape_cast(a, m.in.va, b, m.in.vb, m.in.max_t).outcome != CastOutcome::InvalidInput) {
+    if (shape_cast(a, m.in.xa, m.in.va, b, m.in.xb, m.in.vb, m.in.max_t).outcome != CastOutcome::InvalidInput) {
       fail_raw("shape_cast accepted an invalid motion: va ", format_point(widen(m.in.va)), " vb ",
                format_point(widen(m.in.vb)), " max_t ", format_value(double(m.in.max_t)));
     }
@@ -104,7 +125,7 @@ void check(const Shape<T>& a, const Shape<T>& b, const MotionCase<T>& m) {
   sb.c1 = m.in.vb;
   sb.a1 = m.turn_b;
   const T max_t = std::isfinite(double(m.in.max_t)) ? T(std::fmod(std::fabs(double(m.in.max_t)), 1.0)) : T(1);
-  const bool valid = valid_motion(laws::CastInput<T>{m.in.va, m.in.vb, T(1)}) &&
+  const bool valid = valid_motion(laws::CastInput<T>{m.in.va, m.in.vb, T(1), {}, {}}) &&
                      std::fabs(double(m.turn_a)) <= double(max_magnitude<T>()) &&
                      std::fabs(double(m.turn_b)) <= double(max_magnitude<T>());
   if (!valid) {

@@ -125,6 +125,7 @@ int round_trip_other_suites() {
     if (row.suite == laws::LawSuite::Placed && row.inputs != laws::LawInputs::TransformValues) c.transform_a = xa;
     if (row.law == Law::PlacedAgreement || row.law == Law::PlacedOutputs || row.law == Law::PlacedResolution)
       c.transform_b = xb;
+    if (row.law == Law::Cast || row.law == Law::CastSymmetry) c.transform_b = xb;
     c.px = 0.5;
     c.py = 0;
     c.ox = -3;

@@ -107,6 +107,13 @@ void check_pair_queries() {
         keep(rounding_tolerance(a, x, b, xb));
         keep(resolve_margin(a, x, b, xb, T(1)));
       });
+      expect_none("shape casts", [&] {
+        const Vec2<T> v(T(-4), T(1)), still(0, 0);
+        keep(shape_cast(a, x, v, b, xb, still, T(2)));
+        keep(shape_cast(vb, xb, still, va, x, v, T(2)));
+        keep(shape_cast(a, v, b, still, T(2)));
+        keep(cast_tolerance(a, x, v, b, xb, still, T(2)));
+      });
     }
   }
 }

@@ -233,6 +233,88 @@ double distance_at(const Vec2<double>& p, const S& s, const Vec2<double>& v, dou
   return distance(Circle<double>(p, 0), translated(s, Vec2<double>(v * t)).value());
 }
 
+TYPED_TEST(Cast, PlacedBulletStopsAtTheTurnedWall) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // Stored in local frames: a wall lying along x, turned upright by a quarter turn and placed at
+  // x = 10 (world x in [9.75, 10.25]); a ball at its local origin, placed at (-10, 0) by a
+  // rounded rotation (which does not move its centre).
+  const Aabb<T> wall(V(-5, T(-0.25)), V(5, T(0.25)));
+  const Circle<T> ball(V(0, 0), T(0.5));
+  const Transform<T> xw = Transform<T>::make_with_rotation(V(10, 0), V(0, 1)).value();
+  const Transform<T> xb(V(-10, 0), T(0.7));
+  const V v(100, 0), still(0, 0);
+  const CastResult<T> r = shape_cast(ball, xb, v, wall, xw, still, T(1));
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  const double exact = (9.75 - (-10 + 0.5)) / 100;
+  const double eps = cast_tolerance(ball, xb, v, wall, xw, still, T(1));
+  EXPECT_LE(double(r.t), exact);
+  EXPECT_GE(double(r.t), exact - eps / 100);
+  EXPECT_NEAR(double(r.normal.x()), 1.0, 1e-6);
+  EXPECT_NEAR(double(r.point.x()), 9.75, 1e-3);
+  // The same shapes built in world space meet at the same time, within both tolerances.
+  const Aabb<T> world_wall(V(T(9.75), -5), V(T(10.25), 5));
+  const Circle<T> world_ball(V(-10, 0), T(0.5));
+  const CastResult<T> w = shape_cast(world_ball, v, world_wall, still, T(1));
+  ASSERT_EQ(w.outcome, CastOutcome::Hit);
+  EXPECT_NEAR(double(w.t), double(r.t), (eps + cast_tolerance(world_ball, v, world_wall, still, T(1))) / 100);
+  // Swapped, and seen as relative motion: the same t to the bit, the normal reversed.
+  const CastResult<T> s = shape_cast(wall, xw, still, ball, xb, v, T(1));
+  EXPECT_EQ(s.t, r.t);
+  EXPECT_EQ(s.normal, V(-r.normal));
+  const CastResult<T> rel = shape_cast(ball, xb, V(v - V(3, 0)), wall, xw, V(-3, 0), T(1));
+  EXPECT_EQ(rel.t, r.t);
+  // Stopping short is a miss; starting against the wall is a hit at t = 0.
+  EXPECT_EQ(shape_cast(ball, xb, v, wall, xw, still, T(0.125)).outcome, CastOutcome::Miss);
+  const Transform<T> against = Transform<T>::make_translation(V(T(9.25), 3)).value();
+  const CastResult<T> start = shape_cast(ball, against, v, wall, xw, still, T(1));
+  EXPECT_EQ(start.outcome, CastOutcome::Hit);
+  EXPECT_EQ(start.t, T(0));
+}
+
+TYPED_TEST(Cast, IdentityTransformsAreTheWorldSpaceCast) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Capsule<T> a(V(0, 0), V(1, 0), T(0.25));
+  const ConvexPolygon<T> b{V(3, 0), V(4, 0), V(3, 1)};
+  const Transform<T> id;
+  for (const V& va : {V(3, 0), V(3, T(0.5)), V(0, 1)}) {
+    const CastResult<T> w = shape_cast(a, va, b, V(0, 0), T(2));
+    const CastResult<T> p = shape_cast(a, id, va, b, id, V(0, 0), T(2));
+    EXPECT_EQ(p.outcome, w.outcome);
+    EXPECT_EQ(p.t, w.t);
+    EXPECT_EQ(p.normal, w.normal);
+    EXPECT_EQ(p.point, w.point);
+    EXPECT_EQ(cast_tolerance(a, id, va, b, id, V(0, 0), T(2)), cast_tolerance(a, va, b, V(0, 0), T(2)));
+  }
+}
+
+TYPED_TEST(Cast, PlacedCompoundWithChildTransformsMeetsAtTheKnownTime) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // Two unit squares, each stored at its own origin and placed by a child transform at x = -1
+  // and x = +1 (one turned a quarter): the compound spans x in [-1.5, 1.5], y in [-0.5, 0.5].
+  // The body turns it upright (y in [8.5, 11.5] at (0, 10)); a ball below it rises.
+  using C = Compound<T>;
+  const Aabb<T> square(V(T(-0.5), T(-0.5)), V(T(0.5), T(0.5)));
+  const C body = C::make_placed({{square, Transform<T>::make_translation(V(-1, 0)).value()},
+                                 {square, Transform<T>::make_with_rotation(V(1, 0), V(0, 1)).value()}})
+                     .value();
+  const Transform<T> xc = Transform<T>::make_with_rotation(V(0, 10), V(0, 1)).value();
+  const Circle<T> ball(V(0, 0), T(0.25));
+  const V up(0, 4), still(0, 0);
+  const Transform<T> id;
+  const CastResult<T> r = shape_cast(ball, id, up, body, xc, still, T(4));
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  const double exact = (10 - 1.5 - 0.25) / 4;
+  EXPECT_LE(double(r.t), exact);
+  EXPECT_GE(double(r.t), exact - cast_tolerance(ball, id, up, body, xc, still, T(4)) / 4);
+  EXPECT_NEAR(double(r.normal.y()), 1.0, 1e-6);
+  // Aimed beside it (x = 0.875: the compound's half width 0.5 plus the radius is 0.75): a miss.
+  const Transform<T> beside = Transform<T>::make_translation(V(T(0.875), 0)).value();
+  EXPECT_EQ(shape_cast(ball, beside, up, body, xc, still, T(4)).outcome, CastOutcome::Miss);
+}
+
 TEST(CastRegression, StepAxisFromClosestPointsLosesSeparationAlongASliver) {
   using V = Vec2<double>;
   // At a gap of 5e-7, 1e6 from the origin, the closest points' direction is off by 2e-4 rad and

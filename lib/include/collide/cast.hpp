@@ -5,31 +5,39 @@
 /// Semantics: a moves to a + va * s and b to b + vb * s for s in [0, max_t]; both are closed sets
 /// and touching counts, as everywhere. shape_cast() returns the first time the moving shapes meet,
 /// with the unit normal from a toward b and the point midway between the surfaces there. Shapes
-/// that overlap at the start (touching included, decided exactly by overlaps()) hit at t = 0 with
-/// the normal and first point of contact(a, b). A compound casts as the earliest of its child pairs.
+/// that overlap at the start (touching included, decided by overlaps()) hit at t = 0 with the
+/// normal and first point of contact(a, b). A compound casts as the earliest of its child pairs.
+/// Shapes stored in local frames cast with their transforms (shape_cast(a, xa, va, b, xb, vb,
+/// max_t)): each is the exact image of its stored values under its transform (transform.hpp),
+/// moving with it; the world-space cast is this with the identities.
 ///
-/// Error contract (eps = cast_tolerance(a, va, b, vb, max_t), a distance):
+/// Error contract (eps = cast_tolerance(a, xa, va, b, xb, vb, max_t), a distance):
 /// - Never later than the first contact: for a Hit with t > 0, and for IterationLimit, the exact
 ///   shapes are apart (share no point) at every time in [0, t]. Nothing tunnels.
 /// - Not much earlier: at a Hit's t the exact gap between the moved shapes is at most eps. (When
 ///   they go on to touch, the first contact follows once that gap has closed; a motion grazing
 ///   past within eps may be reported as a hit.)
-/// - A Hit at t = 0 means the shapes overlap at the start or their exact gap there is <= eps.
+/// - A Hit at t = 0 means the shapes overlap at the start or their exact gap there is <= eps;
+///   shapes whose exact images overlap at the start always hit at t = 0.
 /// - A Miss means the exact shapes are apart at every time in [0, max_t].
-/// - eps = 3 * target + 2 eps_T |w| max_t + 2 denorm_min_T |w|, with w = va - vb, |.| the largest
-///   component, target = kCastTargetFactor * 2^-53 * M + 2^-500 and M = S + |w| max_t (S the
-///   largest absolute coordinate of both bounding boxes): the rounding of the moved cores, and of
-///   t down to T.
+/// - eps = 3 * target + 2 eps_T |w| max_t + 2 denorm_min_T |w| + 2 delta, with w = va - vb, |.|
+///   the largest component, target = kCastTargetFactor * 2^-53 * M + 2^-500 and M = S + |w| max_t
+///   (S the largest absolute coordinate of both world bounding boxes, bounds(s, x)): the rounding
+///   of the moved cores, and of t down to T. delta = transform_tolerance(a, xa) +
+///   transform_tolerance(b, xb) (overlap_tolerance(a, xa, b, xb); 0 for stored shapes placed by
+///   the identity): the computed images lie within it of the exact ones, so the cast advances
+///   them dilated by delta and the exact shapes stay apart wherever the dilated images do.
 /// - Only the relative motion matters: the answer depends on va - vb (computed in double) alone,
-///   and a pair is computed in one fixed order of its primitives, so swapping a and b gives the
-///   same t and the reversed normal, bit for bit.
+///   and a pair is computed in one fixed order of its primitives, so swapping a and b (with
+///   their transforms) gives the same t and the reversed normal, bit for bit.
 /// - Defined answers everywhere: zero relative velocity, motion parallel to a face (a box sliding
 ///   along flat ground), shapes starting in contact. NaN or infinite input, max_t < 0, a velocity
 ///   beyond max_magnitude<T>() or a travel (|w|, |va| or |vb| times max_t) beyond
 ///   2 max_magnitude<T>() give
 ///   CastOutcome::InvalidInput. At most kCastMaxIterations steps per pair of primitives; beyond
 ///   that the answer is IterationLimit with the last time proven free of contact.
-/// No allocation for shapes of at most 8 vertices.
+/// No allocation for shapes of at most 8 vertices (a compound's children are imaged one at a
+/// time, never copied).
 ///
 /// Method: conservative advancement on the dilated cores (detail/core.hpp). At each step the
 /// closest points give an axis n; the separation along n shrinks at most at the closing speed
@@ -41,6 +49,8 @@
 #include "collide/detail/core.hpp"
 #include "collide/queries.hpp"
 #include "collide/shape_traits.hpp"
+#include "collide/transform.hpp"
+#include "collide/transformed.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -60,9 +70,10 @@ inline Core moved_core(const Core& c, const Vec2c& v) {
 }
 
 /// Conservative advancement of core p moving by w per unit time against the fixed core q, from
-/// s = 0, where the two are known to be apart, up to s_max.
-inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Calc s_max, Calc target) {
-  const Calc r = p.radius + q.radius;
+/// s = 0, where the two are known to be apart, up to s_max; both dilated by skin in all (the
+/// images' distance from the exact shapes), so that the exact shapes stay apart too.
+inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Calc s_max, Calc target, Calc skin) {
+  const Calc r = p.radius + q.radius + skin;
   // n . w is off by a few roundings of |w| (n is a rounded unit vector).
   const Calc closing_error = 4 * kUnitRoundoff * (std::fabs(w.x()) + std::fabs(w.y()));
   Calc s = 0;
@@ -75,7 +86,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     // closing speed, so stepping to where it reaches target leaves the cores apart. When rounding
     // has left no axis separating by more than target, the gap itself falls no faster than |w|.
     const Vec2c n = best_axis(pm, q, cl);
-    const Calc separation = separation_along(pm, q, n);
+    const Calc separation = separation_along(pm, q, n) - skin;
     const Calc closing = std::max(n.dot(w), Calc(0)) + closing_error;
     Calc ds = separation > target ? (separation - target) / closing : Calc(0);  // +inf when w = 0
     if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + 0x1p-50));
@@ -91,17 +102,21 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
 /// One pair of primitives known apart at s = 0, advanced in the fixed order of core_before()
 /// (the one moving at the relative velocity, the other still), with the point taken back to the
 /// world frame of time s by the velocity of the one held still.
-inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const Vec2c& vq, Calc s_max, Calc target) {
+inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const Vec2c& vq, Calc s_max, Calc target,
+                           Calc skin) {
   const bool swap = core_before(q, p);
-  CoreCast c = swap ? reversed(advance_linear(q, p, vq - vp, s_max, target)) : advance_linear(p, q, vp - vq, s_max, target);
+  CoreCast c = swap ? reversed(advance_linear(q, p, vq - vp, s_max, target, skin))
+                    : advance_linear(p, q, vp - vq, s_max, target, skin);
   if (c.outcome == CastOutcome::Hit) c.point += (swap ? vp : vq) * c.s;
   return c;
 }
 
-/// The motion's scale M: the largest coordinate the moving shapes reach (relative motion).
+/// The motion's scale M: the largest coordinate the moving shapes reach (relative motion), from
+/// their world bounding boxes.
 template <AnyShape A, AnyShape B>
-Calc cast_scale(const A& a, const B& b, const Vec2c& w, Calc max_t) {
-  const Calc s = std::max(scale_of(bounds(a)), scale_of(bounds(b)));
+Calc cast_scale(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
+                const Vec2c& w, Calc max_t) {
+  const Calc s = std::max(scale_of(bounds(a, xa)), scale_of(bounds(b, xb)));
   return s + w.cwiseAbs().maxCoeff() * max_t;
 }
 
@@ -125,32 +140,44 @@ bool cast_input_valid(const Vec2<T>& va, const Vec2<T>& vb, T max_t) noexcept {
 
 }  // namespace detail
 
-/// The distance bound eps of shape_cast()'s contract for this motion (see the top of cast.hpp):
-/// at a hit's t the exact shapes are at most eps apart. Inputs as for shape_cast().
+/// The distance bound eps of shape_cast()'s contract for this motion of a placed by xa and b
+/// placed by xb (see the top of cast.hpp): at a hit's t the exact shapes are at most eps apart.
+/// Inputs as for shape_cast().
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc cast_tolerance(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb,
-                    scalar_of_t<A> max_t) {
+Calc cast_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va, const B& b,
+                    const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   const Vec2c w = widen(va) - widen(vb);
   const Calc speed = w.cwiseAbs().maxCoeff();
   const Calc m = static_cast<Calc>(max_t);
-  return 3 * detail::advance_target(detail::cast_scale(a, b, w, m)) +
+  return 3 * detail::advance_target(detail::cast_scale(a, xa, b, xb, w, m)) +
          2 * Calc(std::numeric_limits<T>::epsilon()) * speed * m +
-         2 * Calc(std::numeric_limits<T>::denorm_min()) * speed;
+         2 * Calc(std::numeric_limits<T>::denorm_min()) * speed + 2 * overlap_tolerance(a, xa, b, xb);
 }
 
-/// The first time in [0, max_t] at which a moving at va meets b moving at vb (velocities in
-/// distance per unit of t), with the normal from a toward b and the point between the surfaces
-/// there. Any shape types, either order, one scalar. See the contract at the top of cast.hpp.
+/// cast_tolerance() of shapes in world space (both transforms the identity).
 template <AnyShape A, AnyShape B>
   requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b,
-                                      const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+Calc cast_tolerance(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb,
+                    scalar_of_t<A> max_t) {
+  using X = Transform<scalar_of_t<A>>;
+  return cast_tolerance(a, X(), va, b, X(), vb, max_t);
+}
+
+/// The first time in [0, max_t] at which a, stored in its local frame and placed by xa, moving at
+/// va meets b placed by xb moving at vb (velocities in world distance per unit of t), with the
+/// normal from a toward b and the point between the surfaces there, in world coordinates. Any
+/// shape types, either order, one scalar. See the contract at the top of cast.hpp.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+CastResult<scalar_of_t<A>> shape_cast(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va,
+                                      const B& b, const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb,
+                                      scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   if (!detail::cast_input_valid(va, vb, max_t)) return detail::invalid_cast<T>();
-  // Starting in contact: decided exactly, answered by contact().
-  if (const auto c = contact(a, b)) {
+  // Starting in contact (the computed images overlap): answered by contact().
+  if (const auto c = contact(a, xa, b, xb)) {
     CastResult<T> out;
     out.outcome = CastOutcome::Hit;
     out.t = T(0);
@@ -160,12 +187,28 @@ CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va
   }
   const Vec2c wa = widen(va), wb = widen(vb), w = wa - wb;
   const Calc s_max = static_cast<Calc>(max_t);
-  const Calc target = detail::advance_target(detail::cast_scale(a, b, w, s_max));
+  const Calc target = detail::advance_target(detail::cast_scale(a, xa, b, xb, w, s_max));
+  const Calc skin = overlap_tolerance(a, xa, b, xb);
+  const auto step = [&](const detail::Core& p, const detail::Core& q, Calc until) {
+    return detail::cast_cores(p, wa, q, wb, until, target, skin);
+  };
   const detail::CoreCast best =
-      detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
-        return detail::cast_cores(p, wa, q, wb, until, target);
-      });
+      xa.is_identity() && xb.is_identity()
+          ? detail::earliest_over_pairs(a, b, s_max, step)
+          : detail::with_placed_pair(a, xa, b, xb, [&](const auto& pa, const auto& pb) {
+              return detail::earliest_over_pairs(pa, pb, s_max, step);
+            });
   return detail::to_result<T>(best, s_max);
+}
+
+/// The first time in [0, max_t] at which a moving at va meets b moving at vb, both in world
+/// space: shape_cast() with both transforms the identity. See the contract at the top of cast.hpp.
+template <AnyShape A, AnyShape B>
+  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b,
+                                      const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+  using X = Transform<scalar_of_t<A>>;
+  return shape_cast(a, X(), va, b, X(), vb, max_t);
 }
 
 }  // namespace collide

@@ -9,8 +9,9 @@
 /// t1 = t, pad = 0 this decides t* <= t for the first contact time t*; with t0 = t1 = t it is the
 /// overlap (or the gap bound) at time t. A compound meets when some pair of children does.
 ///
-/// Posed shapes. A shape at a pose (rotation q, position p, both doubles) is the exact image of
-/// its stored local values: x -> R(q) x + p with R(q) = [[qx, -qy], [qy, qx]], all exact.
+/// Posed and placed shapes. A shape at a pose (rotation q, position p, both doubles) is the exact
+/// image of its stored local values: x -> R(q) x + p with R(q) = [[qx, -qy], [qy, qx]], all exact;
+/// a compound child is placed by its own transform first (as oracle::Placed defines it).
 ///
 /// Every value is an exact binary rational (sums and products of doubles), so the whole
 /// computation runs in CGAL::Gmpzf (exact +, -, *); every decision is the sign of a polynomial
@@ -216,24 +217,31 @@ Core posed(const Core& c, const Vec2d& q, const Vec2d& p) {
   return hull_of(pts, c.radius);
 }
 
-/// The cores of a shape's primitives in its frame: itself, or a compound's children, each placed
-/// exactly by its child transform.
-boost::container::small_vector<Core, 4> cores_of(const Shape<double>& s) {
-  boost::container::small_vector<Core, 4> out;
+bool is_identity(const Vec2d& q, const Vec2d& p) { return p == Vec2d(0, 0) && q == Vec2d(1, 0); }
+
+using Cores = boost::container::small_vector<Core, 4>;
+
+/// The exact cores of a placed shape's primitives (itself, or a compound's children): each
+/// child's core placed by its own transform, then by the body's.
+Cores cores_of(const Placed& s) {
+  Cores out;
+  const bool body = !is_identity(s.rotation, s.position);
+  auto add = [&](const Primitive<double>& x, const Transform<double>& own) {
+    Core c = local_core(x);
+    if (!own.is_identity()) c = posed(c, own.rotation(), own.position());
+    if (body) c = posed(c, s.rotation, s.position);
+    out.push_back(hull_of(c.v, c.radius));
+  };
   std::visit(
       [&](const auto& x) {
         using S = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<S, Compound<double>>) {
-          for (std::size_t i = 0; i < x.children().size(); ++i) {
-            const Transform<double> t = x.child_transform(i);
-            const Core c = local_core(x.children()[i]);
-            out.push_back(t.is_identity() ? c : posed(c, t.rotation(), t.position()));
-          }
+          for (std::size_t i = 0; i < x.children().size(); ++i) add(x.children()[i], x.child_transform(i));
         } else {
-          out.push_back(local_core(Primitive<double>(x)));
+          add(Primitive<double>(x), Transform<double>());
         }
       },
-      s);
+      s.shape);
   return out;
 }
 
@@ -241,8 +249,8 @@ boost::container::small_vector<Core, 4> cores_of(const Shape<double>& s) {
 
 namespace exact {
 
-bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<double>& b, const Vec2<double>& vb,
-                  double t0, double t1, double pad) {
+bool meets_during(const Placed& a, const Vec2<double>& va, const Placed& b, const Vec2<double>& vb, double t0,
+                  double t1, double pad) {
   require_finite(va, "velocity");
   require_finite(vb, "velocity");
   require_finite(t0, "time");
@@ -252,7 +260,7 @@ bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<do
   const P w{NT(va.x()) - NT(vb.x()), NT(va.y()) - NT(vb.y())};
   const P d0{w.x * NT(t0), w.y * NT(t0)}, d1{w.x * NT(t1), w.y * NT(t1)};
   const NT padn(std::max(pad, 0.0));
-  const auto cb = cores_of(b);
+  const Cores cb = cores_of(b);
   for (const Core& ca : cores_of(a)) {
     Points swept;
     for (const P& p : ca.v) {
@@ -260,8 +268,8 @@ bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<do
       swept.push_back({p.x + d1.x, p.y + d1.y});
     }
     const Core sa = hull_of(swept, ca.radius);
-    for (const Core& y : cb) {
-      if (within(sa, hull_of(y.v, y.radius), padn)) return true;
+    for (const Core& q : cb) {
+      if (within(sa, q, padn)) return true;
     }
   }
   return false;
@@ -271,11 +279,10 @@ bool meets_posed(const Shape<double>& a, const Vec2<double>& qa, const Vec2<doub
                  const Vec2<double>& qb, const Vec2<double>& pb, double pad) {
   require_finite(pad, "pad");
   const NT padn(std::max(pad, 0.0));
-  const auto cb = cores_of(b);
-  for (const Core& x : cores_of(a)) {
-    const Core ca = posed(x, qa, pa);
-    for (const Core& y : cb) {
-      if (within(ca, posed(y, qb, pb), padn)) return true;
+  const Cores cb = cores_of(Placed(b, pb, qb));
+  for (const Core& ca : cores_of(Placed(a, pa, qa))) {
+    for (const Core& q : cb) {
+      if (within(ca, q, padn)) return true;
     }
   }
   return false;

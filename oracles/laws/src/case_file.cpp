@@ -316,7 +316,9 @@ Sweep<T> sweep_of(const std::optional<std::array<double, 8>>& v) {
 template <Scalar T>
 Verdict replay_as(const Case& c) {
   const Law law = c.law;
-  if (info(law).suite != LawSuite::Placed && (c.transform_a || c.transform_b))
+  const bool placed = (info(law).suite == LawSuite::Placed && law != Law::TransformRejection) || law == Law::Cast ||
+                      law == Law::CastSymmetry || law == Law::CastTranslation;
+  if (!placed && (c.transform_a || c.transform_b))
     throw CaseError("law '" + std::string(name(law)) + "' takes no transform");
   auto shape_a = [&] { return from_data<T>(c.a); };
   auto shape_b = [&]() -> Shape<T> {
@@ -335,7 +337,7 @@ Verdict replay_as(const Case& c) {
   using codec_detail::narrow;
   const Ray<T> ray{vec<T>(c.ox, c.oy), vec<T>(c.dx, c.dy)};
   const Vec2<T> point = vec<T>(c.px, c.py), move = vec<T>(c.tx, c.ty);
-  const CastInput<T> motion{vec<T>(c.vax, c.vay), vec<T>(c.vbx, c.vby), narrow<T>(c.max_t)};
+  const CastInput<T> motion{vec<T>(c.vax, c.vay), vec<T>(c.vbx, c.vby), narrow<T>(c.max_t), xa, xb};
   switch (law) {
     case Law::Agreement: return agreement(shape_a(), shape_b());
     case Law::Symmetry: return symmetry(shape_a(), shape_b());

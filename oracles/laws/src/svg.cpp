@@ -260,7 +260,11 @@ void draw(std::ostream& out, const Case& c) {
     if (a && b && info(c.law).suite == LawSuite::Moving && c.law != Law::Toi && c.law != Law::CastRaycast) {
       // The swept path: a's motion as an arrow, both shapes at the cast's time dashed green.
       const Vec2<T> va(static_cast<T>(c.vax), static_cast<T>(c.vay)), vb(static_cast<T>(c.vbx), static_cast<T>(c.vby));
-      const CastResult<T> r = shape_cast(*a, va, *b, vb, static_cast<T>(c.max_t));
+      const auto placement = [](const std::optional<TransformData>& x) {
+        return x ? transform_from_data<T>(*x) : Transform<T>();
+      };
+      const CastResult<T> r =
+          shape_cast(*a, placement(c.transform_a), va, *b, placement(c.transform_b), vb, static_cast<T>(c.max_t));
       const T t = r.outcome == CastOutcome::Miss ? static_cast<T>(c.max_t) : r.t;
       const auto ma = translated(*a, Vec2<T>(va * t)), mb = translated(*b, Vec2<T>(vb * t));
       if (ma && mb) {

@@ -185,8 +185,8 @@ double approx_signed_distance(const A& a, const B& b) {
 namespace collide::oracle {
 
 namespace exact {
-bool meets_during(const Shape<double>& a, const Vec2<double>& va, const Shape<double>& b, const Vec2<double>& vb,
-                  double t0, double t1, double pad);
+bool meets_during(const Placed& a, const Vec2<double>& va, const Placed& b, const Vec2<double>& vb, double t0,
+                  double t1, double pad);
 bool meets_posed(const Shape<double>& a, const Vec2<double>& qa, const Vec2<double>& pa, const Shape<double>& b,
                  const Vec2<double>& qb, const Vec2<double>& pb, double pad);
 }  // namespace exact
@@ -196,7 +196,8 @@ bool meets_posed(const Shape<double>& a, const Vec2<double>& qa, const Vec2<doub
 /// pad counts as 0). For two primitives the set of such s is an interval, so this is one static
 /// test of a's core swept by (va - vb) over [t0, t1] against b; compounds: some pair of children.
 /// Hence, with t* the exact first contact time: t* <= t  <=>  meets_during(a, va, b, vb, 0, t).
-template <AnyShape A, AnyShape B, Scalar T>
+/// Either shape may be placed by a transform (oracle::placed()): its exact image moves.
+template <OracleInput A, OracleInput B, Scalar T>
 bool meets_during(const A& a, const Vec2<T>& va, const B& b, const Vec2<T>& vb, double t0, double t1, double pad = 0) {
   return exact::meets_during(as_exact_input(a), va.template cast<double>(), as_exact_input(b),
                              vb.template cast<double>(), t0, t1, pad);

@@ -320,34 +320,40 @@ Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b);
 
 namespace collide::laws {
 
-/// The motion of a linear cast: a moves at va, b at vb, over [0, max_t].
+/// The motion of a linear cast: a placed by xa moves at va, b placed by xb at vb, over
+/// [0, max_t]. With both transforms the identity the laws call the world-space shape_cast().
 template <Scalar T>
 struct CastInput {
-  Vec2<T> va;  ///< velocity of a
-  Vec2<T> vb;  ///< velocity of b
-  T max_t;     ///< end of the interval
+  Vec2<T> va;              ///< velocity of a
+  Vec2<T> vb;              ///< velocity of b
+  T max_t;                 ///< end of the interval
+  Transform<T> xa = {};    ///< a's placement (its stored values are local to it)
+  Transform<T> xb = {};    ///< b's placement
 };
 
-/// Cast law. shape_cast(a, va, b, vb, max_t), judged by cast.hpp's contract with
-/// eps = cast_tolerance(): a valid answer with 0 <= t <= max_t; shapes overlapping at the start
-/// (oracle) hit at t = 0 with contact(a, b)'s normal and first point; a hit with t > 0 leaves
-/// the exact shapes apart over [0, t] (no tunnelling) and within eps at t (accuracy), with a unit
-/// normal from a toward b (point + L normal is at least L - slack from a, point - L normal from
-/// b) and a point within eps of both; a miss has no exact contact in [0, max_t]; an iteration
-/// limit none in [0, t]. Relation: Overlapping or Separated at the start.
+/// Cast law. shape_cast(a, xa, va, b, xb, vb, max_t), judged by cast.hpp's contract with
+/// eps = cast_tolerance() on the exact images (oracle::placed): a valid answer with
+/// 0 <= t <= max_t; shapes overlapping at the start (oracle) hit at t = 0, with the normal and
+/// first point of contact(a, xa, b, xb) when that exists (a unit normal otherwise); a hit with
+/// t > 0 leaves the exact shapes apart over [0, t] (no tunnelling) and within eps at t
+/// (accuracy), with a unit normal from a toward b (point + L normal is at least L - slack from a,
+/// point - L normal from b) and a point within eps of both; a miss has no exact contact in
+/// [0, max_t]; an iteration limit none in [0, t]. Relation: Overlapping or Separated at the start.
 template <Scalar T>
 Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
 
-/// Cast symmetry and relative motion: swapping a and b gives the same outcome and t bit for bit
-/// and the reversed normal (bit for bit, except at t = 0 from an overlap, where the normal is
-/// contact()'s, judged by the contact law); cast(a, va - vb, b, 0) gives the same outcome, t and
-/// normal whenever va - vb is exact in T, and its point moved by vb t (within T's rounding).
+/// Cast symmetry and relative motion: swapping a and b (with their transforms) gives the same
+/// outcome and t bit for bit and the reversed normal (bit for bit, except at t = 0 from an
+/// overlap, where the normal is contact()'s, judged by the contact law); cast(a, va - vb, b, 0)
+/// gives the same outcome, t and normal whenever va - vb is exact in T, and its point moved by
+/// vb t (within T's rounding).
 template <Scalar T>
 Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
 
-/// Cast translation invariance: both shapes moved by d (translated()) obey the cast law; when
-/// both moves are exact, a hit before the move and a miss after it (or the reverse) are allowed
-/// only for a motion that passes within the larger tolerance without touching (a disagreement).
+/// Cast translation invariance: both shapes moved by d (translated(), or their transforms
+/// moved by d when either is not the identity) obey the cast law; when both moves are exact, a
+/// hit before the move and a miss after it (or the reverse) are allowed only for a motion that
+/// passes within the larger tolerance without touching (a disagreement).
 template <Scalar T>
 Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in, const Vec2<T>& d);
 
