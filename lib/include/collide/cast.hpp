@@ -89,7 +89,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     const Calc separation = separation_along(pm, q, n) - skin;
     const Calc closing = std::max(n.dot(w), Calc(0)) + closing_error;
     Calc ds = separation > target ? (separation - target) / closing : Calc(0);  // +inf when w = 0
-    if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + 0x1p-50));
+    if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
     if (!(ds > 0)) return hit_between(pm, q, cl, s, step);
     if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;

@@ -133,6 +133,11 @@ inline constexpr Calc kOverlapErrorFactor = 64.0;
 /// so every step stays provably short of contact.
 inline constexpr Calc kCastTargetFactor = 256.0;
 
+/// Shape casts and time of impact: relative inflation of a computed bound on how fast the shapes
+/// can approach (a speed, a reach), covering the bound's own rounding (a few units of 2^-53) with
+/// a margin, so that a step computed from it never passes the first contact.
+inline constexpr Calc kMotionBoundSlack = 0x1p-48;
+
 /// Shape casts and time of impact: advancement steps per pair of primitives before giving up; the
 /// result is then CastOutcome::IterationLimit with the last time proven free of contact.
 inline constexpr int kCastMaxIterations = 64;

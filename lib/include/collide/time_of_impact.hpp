@@ -96,7 +96,7 @@ inline Core posed_core(const Core& c, const SweepPose& pose) {
 inline Calc reach_of(const Core& c, const Vec2c& center) noexcept {
   Calc r = 0;
   for (const Vec2c& p : c.pts()) r = std::max(r, norm_of(p - center));
-  return r * (1 + 0x1p-48);
+  return r * (1 + kMotionBoundSlack);
 }
 
 /// Upper bound on the speed of any point of the core relative to the centre's world frame.
@@ -104,7 +104,7 @@ template <Scalar T>
 Calc sweep_speed(const Sweep<T>& sw, const Core& local) noexcept {
   const Calc travel = norm_of(widen(sw.c1) - widen(sw.c0));
   const Calc turn = std::fabs(static_cast<Calc>(sw.a1) - static_cast<Calc>(sw.a0));
-  return (travel + turn * reach_of(local, widen(sw.local_center))) * (1 + 0x1p-48);
+  return (travel + turn * reach_of(local, widen(sw.local_center))) * (1 + kMotionBoundSlack);
 }
 
 /// A sweep's contribution to the motion's scale M (see the contract at the top of this file).
@@ -128,7 +128,7 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
   const Calc turning = (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_of(pl, widen(sp.local_center)) +
                         std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_of(ql, widen(sq.local_center))) *
-                       (1 + 0x1p-48);
+                       (1 + kMotionBoundSlack);
   const Calc closing_error = 8 * kUnitRoundoff * (vp.cwiseAbs().sum() + vq.cwiseAbs().sum());
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
