@@ -29,8 +29,8 @@ using Pair = std::pair<std::uint32_t, std::uint32_t>;
 /// N boxes with sides in [0.5, 1.5] in a square world of side sqrt(2N): about 2 overlaps each.
 struct World {
   std::vector<collide::Aabb<float>> boxes;
-  std::vector<std::uint32_t> moved;                     // every 10th box
-  std::vector<collide::Aabb<float>> there, back;        // moved boxes displaced, and returned
+  std::vector<std::uint32_t> moved;               // every 10th box
+  std::vector<collide::Aabb<float>> there, back;  // moved boxes displaced, and returned
 };
 
 std::shared_ptr<World> make_world(std::size_t n) {
@@ -115,9 +115,18 @@ struct Box2dTree {
 
 template <class B>
 B make_structure();
-template <> bp::DynamicTree<float> make_structure() { return bp::DynamicTree<float>(0.1f); }  // Box2D's margin
-template <> bp::SweepAndPrune<float> make_structure() { return {}; }
-template <> bp::UniformGrid<float> make_structure() { return bp::UniformGrid<float>(2.0f); }
+template <>
+bp::DynamicTree<float> make_structure() {
+  return bp::DynamicTree<float>(0.1f);
+}  // Box2D's margin
+template <>
+bp::SweepAndPrune<float> make_structure() {
+  return {};
+}
+template <>
+bp::UniformGrid<float> make_structure() {
+  return bp::UniformGrid<float>(2.0f);
+}
 
 template <class B>
 std::vector<bp::ProxyId> fill(B& s, const std::vector<collide::Aabb<float>>& boxes) {
@@ -260,7 +269,8 @@ bool check_events(const World& w, const std::vector<V>& vel) {
   bp::PairTracker<bp::DynamicTree<float>, float> t(make_structure<bp::DynamicTree<float>>());
   bp::PairTracker<bp::SweepAndPrune<float>, float> s;
   std::vector<bp::ProxyId> ti, si;
-  for (std::size_t i = 0; i < w.boxes.size(); ++i) ti.push_back(t.add(w.boxes[i], i)), si.push_back(s.add(w.boxes[i], i));
+  for (std::size_t i = 0; i < w.boxes.size(); ++i)
+    ti.push_back(t.add(w.boxes[i], i)), si.push_back(s.add(w.boxes[i], i));
   std::vector<Pair> current_t, current_s;
   bool ok = true;
   const auto apply = [](auto& tracker, std::vector<Pair>& current) {
@@ -287,8 +297,10 @@ bool check_events(const World& w, const std::vector<V>& vel) {
       s.move(si[i], now.back());
     }
     ok = apply(t, current_t) && apply(s, current_s);
-    if (f % 50 == 0 || f == 1) ok = ok && current_t == brute(now) && current_s == current_t;
-    else ok = ok && current_s == current_t;
+    if (f % 50 == 0 || f == 1)
+      ok = ok && current_t == brute(now) && current_s == current_t;
+    else
+      ok = ok && current_s == current_t;
   }
   std::printf("check broadphase events N=%-6zu 200 frames, pairs at the end %zu  %s\n", w.boxes.size(),
               current_t.size(), ok ? "OK" : "MISMATCH");

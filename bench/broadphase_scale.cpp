@@ -46,9 +46,13 @@ std::vector<collide::Aabb<float>> spread_boxes(std::size_t n) {
 }
 
 /// Every box contains the square [0.5, 1]^2, so every two overlap.
-std::vector<collide::Aabb<float>> piled_boxes(std::size_t n) { return random_boxes(n, 7, 0.5f, 1.0f, 1.5f); }
+std::vector<collide::Aabb<float>> piled_boxes(std::size_t n) {
+  return random_boxes(n, 7, 0.5f, 1.0f, 1.5f);
+}
 
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 /// Builds the structure, visits every pair; writes "build_ms pairs_ms pairs" to the pipe.
 template <class B>
@@ -112,9 +116,8 @@ int main(int argc, char** argv) {
   {
     const auto boxes = spread_boxes(n);
     const std::string tag = "/" + std::to_string(n);
-    const std::size_t want = report("spread/tree" + tag, in_child([&](int fd) {
-                                      run_case(bp::DynamicTree<float>(0.1f), boxes, fd);
-                                    }), 0);
+    const std::size_t want =
+        report("spread/tree" + tag, in_child([&](int fd) { run_case(bp::DynamicTree<float>(0.1f), boxes, fd); }), 0);
     report("spread/sweep" + tag, in_child([&](int fd) { run_case(bp::SweepAndPrune<float>(), boxes, fd); }), want);
     report("spread/grid" + tag, in_child([&](int fd) { run_case(bp::UniformGrid<float>(2.0f), boxes, fd); }), want);
   }

@@ -208,7 +208,8 @@ void judge_set(const std::string& name, const std::vector<CastIn>& casts) {
   for (const CastIn& c : casts) {
     const collide::Vec2<float> zero(0, 0);
     const auto r = collide::shape_cast(c.b_world, c.move, c.a, zero, 1.0f);
-    judge_linear(c, r.hit(), r.outcome == collide::CastOutcome::IterationLimit, r.t, collide::cast_tolerance(c.b_world, c.move, c.a, zero, 1.0f), lc);
+    judge_linear(c, r.hit(), r.outcome == collide::CastOutcome::IterationLimit, r.t,
+                 collide::cast_tolerance(c.b_world, c.move, c.a, zero, 1.0f), lc);
     if (r.outcome == collide::CastOutcome::IterationLimit) ++lc.failed;
     b2ShapeCastOutput o;
     const bool h = box2d_cast(c, &o);
@@ -216,26 +217,30 @@ void judge_set(const std::string& name, const std::vector<CastIn>& casts) {
 
     const collide::Sweep<float> sw = collide_sweep(c);
     const auto ti = collide::time_of_impact(c.b_local, sw, c.a, collide::Sweep<float>{}, 1.0f);
-    judge_swept(c, ti.hit(), ti.outcome == collide::CastOutcome::IterationLimit, ti.t, collide::toi_tolerance(c.b_local, sw, c.a, collide::Sweep<float>{}, 1.0f),
-                [&](double s) {
-                  const collide::SweepPose p = collide::sweep_pose(sw, s);
-                  return std::pair{p.rotation, p.position};
-                },
-                rc);
+    judge_swept(
+        c, ti.hit(), ti.outcome == collide::CastOutcome::IterationLimit, ti.t,
+        collide::toi_tolerance(c.b_local, sw, c.a, collide::Sweep<float>{}, 1.0f),
+        [&](double s) {
+          const collide::SweepPose p = collide::sweep_pose(sw, s);
+          return std::pair{p.rotation, p.position};
+        },
+        rc);
     if (ti.outcome == collide::CastOutcome::IterationLimit) ++rc.failed;
     const b2TOIOutput bo = box2d_toi(c);
     const b2Sweep bs = box2d_sweep(c);
-    judge_swept(c, bo.state == b2TOIOutput::e_touching || bo.state == b2TOIOutput::e_overlapped,
-                bo.state == b2TOIOutput::e_failed, bo.t, 1.25 * b2_linearSlop,
-                [&](double s) {
-                  b2Transform xf;
-                  bs.GetTransform(&xf, float(s));
-                  return std::pair{collide::Vec2<double>(xf.q.c, xf.q.s), collide::Vec2<double>(xf.p.x, xf.p.y)};
-                },
-                rb);
+    judge_swept(
+        c, bo.state == b2TOIOutput::e_touching || bo.state == b2TOIOutput::e_overlapped,
+        bo.state == b2TOIOutput::e_failed, bo.t, 1.25 * b2_linearSlop,
+        [&](double s) {
+          b2Transform xf;
+          bs.GetTransform(&xf, float(s));
+          return std::pair{collide::Vec2<double>(xf.q.c, xf.q.s), collide::Vec2<double>(xf.p.x, xf.p.y)};
+        },
+        rb);
     if (bo.state == b2TOIOutput::e_failed || bo.state == b2TOIOutput::e_unknown) ++rb.failed;
   }
-  std::printf("judge %s: shape_cast %s | b2ShapeCast %s\n", name.c_str(), counts_text(lc).c_str(), counts_text(lb).c_str());
+  std::printf("judge %s: shape_cast %s | b2ShapeCast %s\n", name.c_str(), counts_text(lc).c_str(),
+              counts_text(lb).c_str());
   std::printf("judge %s: time_of_impact %s | b2TimeOfImpact %s\n", name.c_str(), counts_text(rc).c_str(),
               counts_text(rb).c_str());
 }
@@ -273,7 +278,8 @@ bool register_cast() {
     benchmark::RegisterBenchmark(("cast/time_of_impact/" + name + "/collide").c_str(), [in](benchmark::State& st) {
       for (auto _ : st) {
         for (const CastIn& c : *in) {
-          benchmark::DoNotOptimize(collide::time_of_impact(c.b_local, collide_sweep(c), c.a, collide::Sweep<float>{}, 1.0f));
+          benchmark::DoNotOptimize(
+              collide::time_of_impact(c.b_local, collide_sweep(c), c.a, collide::Sweep<float>{}, 1.0f));
         }
       }
       st.SetItemsProcessed(st.iterations() * kCasts);

@@ -56,7 +56,9 @@ struct Scene {
   float side = 0;
 };
 
-b2Vec2 to_b2(const V& v) { return {v.x(), v.y()}; }
+b2Vec2 to_b2(const V& v) {
+  return {v.x(), v.y()};
+}
 
 /// A regular-ish n-gon of radius about r, counter-clockwise.
 std::vector<V> polygon_vertices(int n, float r, std::mt19937& rng) {
@@ -153,7 +155,9 @@ struct Timings {
   std::size_t candidates = 0, contacts = 0, points = 0;
 };
 
-double ms(Clock::time_point a, Clock::time_point b) { return 1e3 * (b - a); }
+double ms(Clock::time_point a, Clock::time_point b) {
+  return 1e3 * (b - a);
+}
 
 Timings run_collide(const Scene& s, int frames = kFrames) {
   const std::size_t n = s.shapes.size();

@@ -48,7 +48,9 @@ struct HullIn {
   b2PolygonShape b;
 };
 
-inline b2Vec2 to_b2(const V& v) { return {v.x(), v.y()}; }
+inline b2Vec2 to_b2(const V& v) {
+  return {v.x(), v.y()};
+}
 
 class Maker {
  public:

@@ -28,8 +28,12 @@ b2Transform identity() {
 const b2Transform kXf = identity();
 
 // ---- Box2D boolean overlap (b2TestOverlap, skins 0) ----------------------------------------
-inline bool b2_overlap(const AabbIn& a, const AabbIn& b) { return b2TestOverlap(a.b, b.b); }
-inline bool b2_overlap(const CircleIn& a, const AabbIn& b) { return b2TestOverlap(&a.b, 0, &b.p, 0, kXf, kXf); }
+inline bool b2_overlap(const AabbIn& a, const AabbIn& b) {
+  return b2TestOverlap(a.b, b.b);
+}
+inline bool b2_overlap(const CircleIn& a, const AabbIn& b) {
+  return b2TestOverlap(&a.b, 0, &b.p, 0, kXf, kXf);
+}
 template <class A, class B>
 inline bool b2_overlap(const A& a, const B& b) {
   return b2TestOverlap(&a.b, 0, &b.b, 0, kXf, kXf);
@@ -50,10 +54,18 @@ inline B2Contact from_manifold(const b2Manifold& m, const b2Shape& sa, const b2S
   return {true, -sep, flip ? -wm.normal : wm.normal};
 }
 // The shape Box2D's manifold functions take (an AABB as its polygon form).
-inline const b2CircleShape& b2_shape(const CircleIn& s) { return s.b; }
-inline const b2PolygonShape& b2_shape(const AabbIn& s) { return s.p; }
-inline const b2PolygonShape& b2_shape(const ObbIn& s) { return s.b; }
-inline const b2PolygonShape& b2_shape(const HullIn& s) { return s.b; }
+inline const b2CircleShape& b2_shape(const CircleIn& s) {
+  return s.b;
+}
+inline const b2PolygonShape& b2_shape(const AabbIn& s) {
+  return s.p;
+}
+inline const b2PolygonShape& b2_shape(const ObbIn& s) {
+  return s.b;
+}
+inline const b2PolygonShape& b2_shape(const HullIn& s) {
+  return s.b;
+}
 // The manifold function of a pair; a circle against a polygon is asked polygon first.
 inline void b2_collide(b2Manifold* m, const b2CircleShape& a, const b2CircleShape& b) {
   b2CollideCircles(m, &a, kXf, &b, kXf);
@@ -65,7 +77,9 @@ inline void b2_collide(b2Manifold* m, const b2PolygonShape& a, const b2PolygonSh
   b2CollidePolygons(m, &a, kXf, &b, kXf);
 }
 template <class A, class B>
-  requires requires(b2Manifold* m, const A& a, const B& b) { b2_collide(m, b2_shape(a), b2_shape(b)); }
+requires requires(b2Manifold* m, const A& a, const B& b) {
+  b2_collide(m, b2_shape(a), b2_shape(b));
+}
 std::optional<B2Contact> b2_manifold(const A& a, const B& b) {
   b2Manifold m;
   b2_collide(&m, b2_shape(a), b2_shape(b));
@@ -75,7 +89,9 @@ std::optional<B2Contact> b2_manifold(const A& a, const B& b) {
 }
 // Manifold call without the world-manifold post-processing, for timing.
 template <class A, class B>
-  requires requires(b2Manifold* m, const A& a, const B& b) { b2_collide(m, b2_shape(a), b2_shape(b)); }
+requires requires(b2Manifold* m, const A& a, const B& b) {
+  b2_collide(m, b2_shape(a), b2_shape(b));
+}
 int b2_manifold_points(const A& a, const B& b) {
   b2Manifold m;
   b2_collide(&m, b2_shape(a), b2_shape(b));
@@ -101,12 +117,14 @@ inline bool naive(const AabbIn& a, const AabbIn& b) {
 }
 template <class A, class B>
 constexpr bool naive_exists() {
-  return requires(const A& a, const B& b) { naive(a, b); };
+  return requires(const A& a, const B& b) {
+    naive(a, b);
+  };
 }
 
 template <class A, class B>
 struct Set {
-  std::string pair;       // registry name, e.g. "circle_obb"
+  std::string pair;  // registry name, e.g. "circle_obb"
   Placement placement;
   std::vector<A> a;
   std::vector<B> b;
@@ -140,8 +158,9 @@ bool cross_check(Set<A, B>& s) {
         ++boundary;
       } else {
         ++bad;
-        if (bad < 5) std::fprintf(stderr, "  %s/%s pair %zu: collide %d, peer %d, gap %g, depth %g\n",
-                                  s.pair.c_str(), name(s.placement), i, c, other, gap, depth);
+        if (bad < 5)
+          std::fprintf(stderr, "  %s/%s pair %zu: collide %d, peer %d, gap %g, depth %g\n", s.pair.c_str(),
+                       name(s.placement), i, c, other, gap, depth);
       }
     };
     compare(b2_overlap(a, b));
@@ -153,18 +172,20 @@ bool cross_check(Set<A, B>& s) {
         ++b2_manifold_checked;
         if (std::fabs(double(m->depth) - depth) > depth_tol) {
           ++depth_bad;
-          if (depth_bad < 5) std::fprintf(stderr, "  %s/%s pair %zu: depth collide %g, Box2D %g\n", s.pair.c_str(),
-                                          name(s.placement), i, depth, double(m->depth));
+          if (depth_bad < 5)
+            std::fprintf(stderr, "  %s/%s pair %zu: depth collide %g, Box2D %g\n", s.pair.c_str(), name(s.placement), i,
+                         depth, double(m->depth));
         }
       }
     }
   }
   s.overlap_rate = double(hits) / double(s.a.size());
-  std::printf("check %-16s %-8s overlap %5.1f%%  filter decided %6.2f%% (exact signs %llu)  "
-              "boundary-band disagreements %ld  contacts compared %ld  %s\n",
-              s.pair.c_str(), name(s.placement), 100 * s.overlap_rate,
-              100.0 * double(long(s.a.size()) - exact_calls) / double(s.a.size()), (unsigned long long)exact_signs,
-              boundary, b2_manifold_checked, bad == 0 && depth_bad == 0 ? "OK" : "MISMATCH");
+  std::printf(
+      "check %-16s %-8s overlap %5.1f%%  filter decided %6.2f%% (exact signs %llu)  "
+      "boundary-band disagreements %ld  contacts compared %ld  %s\n",
+      s.pair.c_str(), name(s.placement), 100 * s.overlap_rate,
+      100.0 * double(long(s.a.size()) - exact_calls) / double(s.a.size()), (unsigned long long)exact_signs, boundary,
+      b2_manifold_checked, bad == 0 && depth_bad == 0 ? "OK" : "MISMATCH");
   return bad == 0 && depth_bad == 0;
 }
 
@@ -217,8 +238,9 @@ bool add_pair(collide::ShapeKind ka, collide::ShapeKind kb, float near_scale, MA
     s->pair = collide::name(collide::make_pair(ka, kb));
     s->placement = p;
     Maker maker(seed + (p == Placement::Near ? 1000u : 0u));
-    maker.pairs(kPairs, p, near_scale, [&](const V& at) { return (maker.*ma)(at); },
-                [&](const V& at) { return (maker.*mb)(at); }, s->a, s->b);
+    maker.pairs(
+        kPairs, p, near_scale, [&](const V& at) { return (maker.*ma)(at); },
+        [&](const V& at) { return (maker.*mb)(at); }, s->a, s->b);
     ok = cross_check(*s) && ok;
     register_set(s);
   }

@@ -21,8 +21,8 @@ namespace {
 
 using T = float;
 using V = collide::Vec2<T>;
-using collide::broadphase::ProxyId;
 using collide::Shape;
+using collide::broadphase::ProxyId;
 
 constexpr T kArena = 20;      // the walls' inner faces are at +-kArena
 constexpr T kDt = T(1) / 60;  // seconds per frame
@@ -44,8 +44,10 @@ struct Body {
 Shape<T> shape_of(const Body& b) {
   const V axis(std::cos(b.angle), std::sin(b.angle));
   switch (b.kind) {
-    case collide::ShapeKind::Circle: return collide::Circle<T>(b.position, b.size);
-    case collide::ShapeKind::Obb: return collide::Obb<T>(b.position, V(b.size, b.size / 2), b.angle);
+    case collide::ShapeKind::Circle:
+      return collide::Circle<T>(b.position, b.size);
+    case collide::ShapeKind::Obb:
+      return collide::Obb<T>(b.position, V(b.size, b.size / 2), b.angle);
     case collide::ShapeKind::Capsule:
       return collide::Capsule<T>(b.position - axis * b.size, b.position + axis * b.size, b.size / 2);
     default: {
@@ -149,16 +151,22 @@ int main(int argc, char** argv) {
       collide::Aabb<T>(V(-k - 1, -k - 1), V(k + 1, -k)), collide::Aabb<T>(V(-k - 1, k), V(k + 1, k + 1)),
       collide::Aabb<T>(V(-k - 1, -k), V(-k, k)), collide::Aabb<T>(V(k, -k), V(k + 1, k))};
   std::vector<ProxyId> wall_ids;
-  for (const Shape<T>& w : walls) wall_ids.push_back(world.add(w, 0, collide::broadphase::Filter{kWallGroup, kBodyGroup}));
+  for (const Shape<T>& w : walls)
+    wall_ids.push_back(world.add(w, 0, collide::broadphase::Filter{kWallGroup, kBodyGroup}));
 
   // Moving bodies on a grid, every primitive kind, with random speeds and spins.
   Random rng;
   std::vector<Body> bodies;
-  const collide::ShapeKind kinds[] = {collide::ShapeKind::Circle, collide::ShapeKind::Obb,
-                                      collide::ShapeKind::Capsule, collide::ShapeKind::Polygon};
+  const collide::ShapeKind kinds[] = {collide::ShapeKind::Circle, collide::ShapeKind::Obb, collide::ShapeKind::Capsule,
+                                      collide::ShapeKind::Polygon};
   for (int i = 0; i < 30; ++i) {
-    Body b{kinds[i % 4], T(0.6) + rng.next(), V(T(-15 + 6 * (i % 6)), T(-12 + 6 * (i / 6))), 0,
-           V(rng.next() * 16 - 8, rng.next() * 16 - 8), rng.next() * 4 - 2, ProxyId{}};
+    Body b{kinds[i % 4],
+           T(0.6) + rng.next(),
+           V(T(-15 + 6 * (i % 6)), T(-12 + 6 * (i / 6))),
+           0,
+           V(rng.next() * 16 - 8, rng.next() * 16 - 8),
+           rng.next() * 4 - 2,
+           ProxyId{}};
     b.id = world.add(shape_of(b), std::uint64_t(i), collide::broadphase::Filter{kBodyGroup, kWallGroup | kBodyGroup});
     bodies.push_back(b);
   }
@@ -242,9 +250,10 @@ int main(int argc, char** argv) {
   expect(pushes_left_overlapping == 0, "every push separates the pair it resolves");
   expect(began > 0 && ended > 0, "contacts began and ended during the run");
 
-  std::printf("%d frames, %zu bodies and %zu walls: %ld contacts began, %ld ended; %ld contacts resolved "
-              "(%ld points)\n",
-              kFrames, bodies.size(), walls.size(), began, ended, contact_pairs, contact_points);
+  std::printf(
+      "%d frames, %zu bodies and %zu walls: %ld contacts began, %ld ended; %ld contacts resolved "
+      "(%ld points)\n",
+      kFrames, bodies.size(), walls.size(), began, ended, contact_pairs, contact_points);
   write_svg(picture, walls, bodies, last_contacts);
   std::printf("picture of the last frame: %s\n", picture);
   std::printf("%s\n", failures == 0 ? "game loop: all checks passed" : "game loop: FAILED");

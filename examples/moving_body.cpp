@@ -15,10 +15,10 @@ int main() {
   using Child = collide::Compound<float>::Child;
 
   // The paddle in its own frame: a 4 x 0.5 bar, and a round cap placed at its right end.
-  const auto paddle = collide::Compound<float>::make_placed(std::vector<Child>{
-                                                                {collide::Aabb<float>(V(-2.0f, -0.25f), V(2.0f, 0.25f)), Xf()},
-                                                                {collide::Circle<float>(V(0.0f, 0.0f), 0.5f),
-                                                                 Xf::make_translation(V(2.0f, 0.0f)).value()}})
+  const auto paddle = collide::Compound<float>::make_placed(
+                          std::vector<Child>{{collide::Aabb<float>(V(-2.0f, -0.25f), V(2.0f, 0.25f)), Xf()},
+                                             {collide::Circle<float>(V(0.0f, 0.0f), 0.5f),
+                                              Xf::make_translation(V(2.0f, 0.0f)).value()}})
                           .value();
   // The balls are world-space shapes (the identity transform).
   std::vector<collide::Circle<float>> balls;

@@ -93,8 +93,8 @@ int main() {
     const auto k = contact(scene[c.i].shape, scene[c.j].shape);
     expect(k.has_value(), "contact exists exactly when the shapes overlap");
     if (!k) continue;
-    std::printf("  %-6s - %-6s normal (%g, %g), depth %g, points", scene[c.i].name.c_str(),
-                scene[c.j].name.c_str(), k->normal.x(), k->normal.y(), k->depth);
+    std::printf("  %-6s - %-6s normal (%g, %g), depth %g, points", scene[c.i].name.c_str(), scene[c.j].name.c_str(),
+                k->normal.x(), k->normal.y(), k->depth);
     for (int p = 0; p < k->count; ++p) std::printf(" (%g, %g)", k->points[p].x(), k->points[p].y());
     std::printf("\n");
   }

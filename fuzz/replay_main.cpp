@@ -99,8 +99,8 @@ int replay_repeatedly(const std::vector<fs::path>& roots, unsigned long repeat) 
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double runs = static_cast<double>(inputs.size()) * static_cast<double>(repeat);
-  std::printf("%s: %zu inputs x %lu in %.3f s: %.0f inputs/s\n", std::string(collide::fuzz::kTarget).c_str(), inputs.size(), repeat,
-              seconds, seconds > 0 ? runs / seconds : 0.0);
+  std::printf("%s: %zu inputs x %lu in %.3f s: %.0f inputs/s\n", std::string(collide::fuzz::kTarget).c_str(),
+              inputs.size(), repeat, seconds, seconds > 0 ? runs / seconds : 0.0);
   return 0;
 }
 
@@ -182,7 +182,8 @@ int main(int argc, char** argv) {
         const collide::laws::Verdict v = collide::laws::replay(c);
         if (!v.ok) {
           std::fprintf(stderr, "%s: law %s still broken\n  expected: %s\n  got: %s\n  %s\n", p.string().c_str(),
-                       std::string(collide::laws::name(c.law)).c_str(), v.expected.c_str(), v.got.c_str(), v.account.c_str());
+                       std::string(collide::laws::name(c.law)).c_str(), v.expected.c_str(), v.got.c_str(),
+                       v.account.c_str());
           status = 1;
         }
         ++case_files;

@@ -72,7 +72,8 @@ Shape<T> with_quarter_child_transforms(const Shape<T>& s) {
   std::vector<typename Compound<T>::Child> kids;
   for (const Primitive<T>& p : c->children()) {
     const int k = *rc::gen::inRange(0, 4);
-    kids.push_back({laws::turned(p, 4 - k, false), Transform<T>::make_with_rotation(V(0, 0), quarter[std::size_t(k)]).value()});
+    kids.push_back(
+        {laws::turned(p, 4 - k, false), Transform<T>::make_with_rotation(V(0, 0), quarter[std::size_t(k)]).value()});
   }
   return Compound<T>::make_placed(std::move(kids)).value();
 }
@@ -104,7 +105,8 @@ Motion<T> gen_world_motion(ShapeKind ka, ShapeKind kb) {
     auto [a, b] = gen_pair<T>(ka, kb);
     const double s = pair_size(a, b);
     const Vec2<T> va = to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8 * speed_scale));
-    const Vec2<T> vb = *rc::gen::arbitrary<bool>() ? Vec2<T>(0, 0) : to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8));
+    const Vec2<T> vb =
+        *rc::gen::arbitrary<bool>() ? Vec2<T>(0, 0) : to_t<T>(Vec2c(grid(-16, 16), grid(-16, 16)) * (s / 8));
     return {a, b, {va, vb, max_t}, false};
   }
   if (style == 1) {  // aimed: from a's inside toward b's, arriving around t = max_t / 2 .. 2 max_t
@@ -120,7 +122,10 @@ Motion<T> gen_world_motion(ShapeKind ka, ShapeKind kb) {
   const Vec2c tangent(-n.y(), n.x());
   const double s = pair_size(a, b);
   const int way = *rc::gen::inRange(0, 4);
-  Vec2c v = way == 0 ? n : way == 1 ? tangent : way == 2 ? Vec2c(tangent + n * std::ldexp(1.0, -*rc::gen::inRange(2, 30))) : Vec2c(tangent - n * 0x1p-20);
+  Vec2c v = way == 0   ? n
+            : way == 1 ? tangent
+            : way == 2 ? Vec2c(tangent + n * std::ldexp(1.0, -*rc::gen::inRange(2, 30)))
+                       : Vec2c(tangent - n * 0x1p-20);
   v *= s * speed_scale * (*rc::gen::arbitrary<bool>() ? 1 : -1) * (way == 0 ? 1 : 1);
   if (way == 0 && v.dot(n) < 0) v = -v;  // head-on: a moves toward b
   const Vec2<T> va = to_t<T>(v);
@@ -148,8 +153,9 @@ Sweep<T> gen_sweep(const Shape<T>& s, const Vec2c& toward, double size) {
   sw.local_center = to_t<T>(lc);
   sw.c0 = sw.local_center;
   const int move = *rc::gen::inRange(0, 3);
-  const Vec2c d = move == 0 ? Vec2c(0, 0) : move == 1 ? Vec2c((toward - lc) * (double(*rc::gen::inRange(1, 9)) / 4))
-                                                      : Vec2c(grid(-8, 8), grid(-8, 8)) * (size / 4);
+  const Vec2c d = move == 0   ? Vec2c(0, 0)
+                  : move == 1 ? Vec2c((toward - lc) * (double(*rc::gen::inRange(1, 9)) / 4))
+                              : Vec2c(grid(-8, 8), grid(-8, 8)) * (size / 4);
   sw.c1 = to_t<T>(widen(sw.c0) + d);
   const std::vector<double> turns = {0, 0.25, -0.25, 0.5, 1, -2, 1e-6, 0.125};
   sw.a1 = T(*rc::gen::elementOf(turns) * 2 * std::numbers::pi);
@@ -275,7 +281,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
           return c;
         });
       };
-    default: break;
+    default:
+      break;
   }
   return {};
 }
@@ -284,7 +291,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
 /// COLLIDE_CAST_DEPTH times RapidCheck's max_success and saves its counterexample.
 void register_all() {
   register_suite(
-      laws::LawSuite::Moving, []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+      laws::LawSuite::Moving,
+      []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
         return property_of<T>(law, ka, kb, test);
       },
       [](const std::function<void()>& property) {

@@ -28,7 +28,9 @@
 namespace collide::props {
 
 /// Integer in [lo, hi] mapped to a double (exact).
-inline double grid(int lo, int hi) { return double(*rc::gen::inRange(lo, hi + 1)); }
+inline double grid(int lo, int hi) {
+  return double(*rc::gen::inRange(lo, hi + 1));
+}
 
 /// A primitive of kind K at the given scale (coordinates = small integers * scale), built in T.
 template <ShapeKind K, Scalar T>
@@ -44,7 +46,8 @@ Primitive<T> gen_primitive(double s) {
     return Aabb<T>(lo, V(lo + size));
   } else if constexpr (K == ShapeKind::Obb) {
     // Axis-aligned half the time (exact corners, exact touching), else rotated, some nearly.
-    const std::vector<V> axes = {V(1, 0), V(0, 1), V(1, 0), V(0, 1), V(-1, 0), V(0, -1), V(3, 4), V(1, 1), V(64, 1), V(-1, 64), V(5, -12)};
+    const std::vector<V> axes = {V(1, 0), V(0, 1), V(1, 0),  V(0, 1),   V(-1, 0), V(0, -1),
+                                 V(3, 4), V(1, 1), V(64, 1), V(-1, 64), V(5, -12)};
     const V axis = *rc::gen::elementOf(axes);
     return Obb<T>::make_with_axis(p(-16, 16), V(T(grid(0, 8) * s), T(grid(1, 8) * s)), axis).value();
   } else if constexpr (K == ShapeKind::Capsule) {
@@ -326,7 +329,8 @@ std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional
 template <Scalar T>
 std::optional<std::pair<Vec2c, double>> round_end(const Shape<T>& s, bool second) {
   if (const auto* c = std::get_if<Circle<T>>(&s)) return std::pair{widen(c->center()), double(c->radius())};
-  if (const auto* c = std::get_if<Capsule<T>>(&s)) return std::pair{widen(second ? c->b() : c->a()), double(c->radius())};
+  if (const auto* c = std::get_if<Capsule<T>>(&s))
+    return std::pair{widen(second ? c->b() : c->a()), double(c->radius())};
   return std::nullopt;
 }
 
@@ -358,8 +362,8 @@ std::pair<Shape<T>, Shape<T>> gen_pythagorean_pair(ShapeKind ka, ShapeKind kb, b
 /// ulps either way, at every scale the placement keeps exact.
 template <Scalar T>
 std::pair<Shape<T>, Shape<T>> gen_touching_pair(ShapeKind ka, ShapeKind kb) {
-  const bool round = (ka == ShapeKind::Circle || ka == ShapeKind::Capsule) &&
-                     (kb == ShapeKind::Circle || kb == ShapeKind::Capsule);
+  const bool round =
+      (ka == ShapeKind::Circle || ka == ShapeKind::Capsule) && (kb == ShapeKind::Circle || kb == ShapeKind::Capsule);
   const int style = *rc::gen::inRange(0, round ? 4 : 3);
   if (style == 3) return gen_pythagorean_pair<T>(ka, kb, *rc::gen::inRange(0, 3) == 0);
   return gen_pair<T>(ka, kb, style == 2 ? Placement::Nudged : Placement::Touching);
@@ -450,22 +454,28 @@ std::vector<T> gen_aimed_values(ShapeKind kind) {
   std::vector<T> out;
   switch (kind) {
     case ShapeKind::Circle:
-    case ShapeKind::Compound: out = v({a, b, *rc::gen::element(a, -a, 0.0)}); break;
-    case ShapeKind::Aabb: out = *rc::gen::arbitrary<bool>() ? v({a, b, -a, b + 1}) : v({a, b, a + 1, b - 1 - grid(0, 4)}); break;
+    case ShapeKind::Compound:
+      out = v({a, b, *rc::gen::element(a, -a, 0.0)});
+      break;
+    case ShapeKind::Aabb:
+      out = *rc::gen::arbitrary<bool>() ? v({a, b, -a, b + 1}) : v({a, b, a + 1, b - 1 - grid(0, 4)});
+      break;
     case ShapeKind::Obb: {
       const int style = *rc::gen::inRange(0, 3);
       out = style == 0 ? v({a, b, -a, b, 1, 0}) : style == 1 ? v({a, b, a, -b, 0, 1}) : v({a, b, a, b, 0, 0});
       break;
     }
-    case ShapeKind::Capsule: out = v({a, b, b, a, *rc::gen::element(a, -a, 0.0)}); break;
+    case ShapeKind::Capsule:
+      out = v({a, b, b, a, *rc::gen::element(a, -a, 0.0)});
+      break;
     case ShapeKind::Polygon: {
       const std::vector<std::vector<double>> polygons = {
-          {0, 0, a, 0, 0, 0},                                  // too few distinct vertices
-          {0, 0, a, a, 2 * a, 2 * a, 3 * a, 3 * a},            // all collinear
-          {0, 0, 4 * a, 0, a, a, 0, 4 * a},                    // reflex vertex (a dart)
-          {0, 0, 4 * a, 0, 2 * a, 0, 4 * a, 4 * a},            // doubling back along a side
-          {0, 4, 2, -3, -4, 1, 4, 1, -2, -3},                  // a star: winds twice
-          {0, 0, 0, a, a, a, a, 0},                            // clockwise square (valid)
+          {0, 0, a, 0, 0, 0},                        // too few distinct vertices
+          {0, 0, a, a, 2 * a, 2 * a, 3 * a, 3 * a},  // all collinear
+          {0, 0, 4 * a, 0, a, a, 0, 4 * a},          // reflex vertex (a dart)
+          {0, 0, 4 * a, 0, 2 * a, 0, 4 * a, 4 * a},  // doubling back along a side
+          {0, 4, 2, -3, -4, 1, 4, 1, -2, -3},        // a star: winds twice
+          {0, 0, 0, a, a, a, a, 0},                  // clockwise square (valid)
       };
       const auto& poly = *rc::gen::elementOf(polygons);
       for (double x : poly) out.push_back(T(x));

@@ -37,8 +37,12 @@ void for_each_law_test(laws::LawSuite suite, Add&& add) {
       case laws::LawInputs::Values:
         for (const ShapeKind k : kKinds) both(k, k, std::string(name(k)));
         break;
-      case laws::LawInputs::Scene: both(ShapeKind::Compound, ShapeKind::Compound, "compound"); break;
-      case laws::LawInputs::TransformValues: both(ShapeKind::Circle, ShapeKind::Circle, ""); break;
+      case laws::LawInputs::Scene:
+        both(ShapeKind::Compound, ShapeKind::Compound, "compound");
+        break;
+      case laws::LawInputs::TransformValues:
+        both(ShapeKind::Circle, ShapeKind::Circle, "");
+        break;
     }
   }
 }
@@ -50,15 +54,16 @@ inline std::string test_name(const std::string& subject, const std::string& scal
 
 /// Registers the GoogleTest test suite.name whose body is `body`.
 inline void register_function_test(const std::string& suite, const std::string& name, std::function<void()> body) {
-  ::testing::RegisterTest(suite.c_str(), name.c_str(), nullptr, nullptr, __FILE__, __LINE__, [body]() -> ::testing::Test* {
-    struct Body : ::testing::Test {
-      std::function<void()> body;
-      void TestBody() override { body(); }
-    };
-    auto* t = new Body;
-    t->body = body;
-    return t;
-  });
+  ::testing::RegisterTest(suite.c_str(), name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                          [body]() -> ::testing::Test* {
+                            struct Body : ::testing::Test {
+                              std::function<void()> body;
+                              void TestBody() override { body(); }
+                            };
+                            auto* t = new Body;
+                            t->body = body;
+                            return t;
+                          });
 }
 
 /// Registers law.name as a test that fails and names the law: a law of the table whose suite has
@@ -75,13 +80,13 @@ inline void register_missing_generator(const std::string& law, const std::string
 /// that fails and names it: a law added to the table but not to its suite's generators.
 template <class Property, class Run>
 void register_suite(laws::LawSuite suite, Property property, Run run) {
-  for_each_law_test(suite, [&]<Scalar T>(const laws::LawInfo& row, ShapeKind ka, ShapeKind kb,
-                                         const std::string& subject) {
-    const std::string law(row.name), name = test_name(subject, std::is_same_v<T, float> ? "float" : "double");
-    std::function<void()> p = property.template operator()<T>(row.law, ka, kb, law + " " + name);
-    if (!p) return register_missing_generator(law, name);
-    register_function_test(law, name, [p, run] { run(p); });
-  });
+  for_each_law_test(
+      suite, [&]<Scalar T>(const laws::LawInfo& row, ShapeKind ka, ShapeKind kb, const std::string& subject) {
+        const std::string law(row.name), name = test_name(subject, std::is_same_v<T, float> ? "float" : "double");
+        std::function<void()> p = property.template operator()<T>(row.law, ka, kb, law + " " + name);
+        if (!p) return register_missing_generator(law, name);
+        register_function_test(law, name, [p, run] { run(p); });
+      });
 }
 
 /// The environment variable `key`, or `fallback` when unset or empty.

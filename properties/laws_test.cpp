@@ -60,9 +60,8 @@ void judge(const laws::Verdict& v, laws::Law law, const std::string& pair, const
   if (!v.ok) {
     g_tally.failed = true;
     const std::string scalar = std::is_same_v<T, float> ? "float" : "double";
-    laws::Case c = laws::make_case<T>(law, a, b, v,
-                                      "property " + std::string(laws::name(law)) + " " + pair + " " + scalar + " " +
-                                          seed_text());
+    laws::Case c = laws::make_case<T>(
+        law, a, b, v, "property " + std::string(laws::name(law)) + " " + pair + " " + scalar + " " + seed_text());
     if (extra) extra(c);
     g_tally.counterexample = c;
   }
@@ -77,14 +76,15 @@ void finish(const std::string& law, const std::string& pair, const std::string& 
   if (g_tally.counterexample) saved = save_counterexample(*g_tally.counterexample);
   const std::string report = env_or("COLLIDE_PROPS_REPORT", "");
   if (!report.empty()) {
-    nlohmann::json record = {{"law", law},
-                             {"pair", pair},
-                             {"scalar", scalar},
-                             {"cases", g_tally.cases},
-                             {"disagreements", g_tally.disagreements},
-                             {"disagreement_ceiling", disagreement_ceiling(law + " " + pair + " " + scalar, g_tally.cases)},
-                             {"failed", g_tally.failed},
-                             {"case_file", saved}};
+    nlohmann::json record = {
+        {"law", law},
+        {"pair", pair},
+        {"scalar", scalar},
+        {"cases", g_tally.cases},
+        {"disagreements", g_tally.disagreements},
+        {"disagreement_ceiling", disagreement_ceiling(law + " " + pair + " " + scalar, g_tally.cases)},
+        {"failed", g_tally.failed},
+        {"case_file", saved}};
     for (std::size_t i = 0; i < 4; ++i)
       record[std::string(laws::name(static_cast<laws::Relation>(i)))] = g_tally.relations[i];
     std::ofstream out(report, std::ios::app);
@@ -166,14 +166,22 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     };
   };
   switch (law) {
-    case Law::Agreement: return simple(&laws::agreement<T>);
-    case Law::Symmetry: return simple(&laws::symmetry<T>);
-    case Law::Resolution: return simple(&laws::resolution<T>);
-    case Law::Contact: return simple(&laws::contact_law<T>);
-    case Law::Distance: return simple(&laws::distance_law<T>);
-    case Law::Separation: return simple(&laws::manifold_separation<T>);
-    case Law::FeatureIds: return simple(&laws::manifold_ids<T>);
-    case Law::Speculative: return simple(&laws::manifold_speculative<T>);
+    case Law::Agreement:
+      return simple(&laws::agreement<T>);
+    case Law::Symmetry:
+      return simple(&laws::symmetry<T>);
+    case Law::Resolution:
+      return simple(&laws::resolution<T>);
+    case Law::Contact:
+      return simple(&laws::contact_law<T>);
+    case Law::Distance:
+      return simple(&laws::distance_law<T>);
+    case Law::Separation:
+      return simple(&laws::manifold_separation<T>);
+    case Law::FeatureIds:
+      return simple(&laws::manifold_ids<T>);
+    case Law::Speculative:
+      return simple(&laws::manifold_speculative<T>);
     case Law::Touching:
       return [=] {
         const auto [a, b] = gen_touching_pair<T>(ka, kb);
@@ -205,7 +213,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         std::vector<typename Compound<T>::Child> children = laws::placed_primitives_of(a);
         const int extra = *rc::gen::inRange(0, 3);
         for (int i = 0; i < extra; ++i) children.push_back({gen_any_primitive<T>(1.0), Transform<T>()});
-        const Shape<T> comp = with_child_transforms(Shape<T>(Compound<T>::make_placed(std::move(children)).value()), 1.0);
+        const Shape<T> comp =
+            with_child_transforms(Shape<T>(Compound<T>::make_placed(std::move(children)).value()), 1.0);
         judge<T>(laws::hierarchy(comp, b), law, subject, comp, b, true);
       };
     case Law::Representation:
@@ -293,7 +302,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         }
         if (!v.ok) RC_FAIL(v.account);
       };
-    default: break;
+    default:
+      break;
   }
   return {};
 }
@@ -340,10 +350,10 @@ void register_test(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string&
 
 /// Every law of the Static suite, over what it takes (law_tests.hpp).
 void register_all() {
-  for_each_law_test(laws::LawSuite::Static, []<Scalar T>(const laws::LawInfo& row, ShapeKind ka, ShapeKind kb,
-                                                          const std::string& subject) {
-    register_test<T>(row.law, ka, kb, subject);
-  });
+  for_each_law_test(laws::LawSuite::Static,
+                    []<Scalar T>(const laws::LawInfo& row, ShapeKind ka, ShapeKind kb, const std::string& subject) {
+                      register_test<T>(row.law, ka, kb, subject);
+                    });
 }
 
 }  // namespace

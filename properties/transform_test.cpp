@@ -54,9 +54,9 @@ std::vector<T> gen_transform_values() {
   std::vector<T> v;
   for (int i = 0; i < 5; ++i) v.push_back(gen_raw_value<T>());
   const int aim = *rc::gen::inRange(0, 4);
-  if (aim == 0) v[3] = v[4] = T(0);                        // zero rotation
-  if (aim == 1) v[3] = T(0.6), v[4] = T(0.8);              // unit up to rounding: kept
-  if (aim == 2) v[0] = max_magnitude<T>(), v[1] = T(1);   // moved() leaves the range
+  if (aim == 0) v[3] = v[4] = T(0);                      // zero rotation
+  if (aim == 1) v[3] = T(0.6), v[4] = T(0.8);            // unit up to rounding: kept
+  if (aim == 2) v[0] = max_magnitude<T>(), v[1] = T(1);  // moved() leaves the range
   return v;
 }
 
@@ -84,9 +84,12 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     };
   };
   switch (law) {
-    case Law::PlacedAgreement: return pair_law(&laws::placed_agreement<T>);
-    case Law::PlacedOutputs: return pair_law(&laws::placed_outputs<T>);
-    case Law::PlacedResolution: return pair_law(&laws::placed_resolution<T>);
+    case Law::PlacedAgreement:
+      return pair_law(&laws::placed_agreement<T>);
+    case Law::PlacedOutputs:
+      return pair_law(&laws::placed_outputs<T>);
+    case Law::PlacedResolution:
+      return pair_law(&laws::placed_resolution<T>);
     case Law::PlacedCovariance:
       return [=] {
         auto [a, b] = gen_pair<T>(ka, kb);
@@ -146,7 +149,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
           return c;
         });
       };
-    default: break;
+    default:
+      break;
   }
   return {};
 }
@@ -155,7 +159,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
 /// printed once and its input saved as a case file.
 void register_all() {
   register_suite(
-      laws::LawSuite::Placed, []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
+      laws::LawSuite::Placed,
+      []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
         return property_of<T>(law, ka, kb, test);
       },
       [](const std::function<void()>& property) {

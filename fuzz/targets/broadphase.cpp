@@ -130,7 +130,9 @@ template <Scalar T, class BP>
 void run_ops(BP& bp, Reader& r) {
   std::vector<Entry<T>> model;
   auto pick_entry = [&](std::uint8_t b) -> Entry<T>* { return model.empty() ? nullptr : &model[b % model.size()]; };
-  auto live_count = [&] { return std::size_t(std::count_if(model.begin(), model.end(), [](const Entry<T>& e) { return e.live; })); };
+  auto live_count = [&] {
+    return std::size_t(std::count_if(model.begin(), model.end(), [](const Entry<T>& e) { return e.live; }));
+  };
   for (int op_index = 0; op_index < kMaxOps && !r.exhausted(); ++op_index) {
     const int group = op_index + 1;
     const std::uint8_t op_byte = r.byte();
@@ -157,7 +159,8 @@ void run_ops(BP& bp, Reader& r) {
       const std::optional<Box<T>> box = c.box();
       const auto err = op == 1 ? error_of([&] { bp.move(e->id, c.min, c.max); }) : error_of([&] { bp.remove(e->id); });
       if (!e->live) {
-        if (err != BroadphaseErrc::InvalidProxy) fail_raw("a stale handle ", id_text(e->id), " was not refused with InvalidProxy");
+        if (err != BroadphaseErrc::InvalidProxy)
+          fail_raw("a stale handle ", id_text(e->id), " was not refused with InvalidProxy");
         continue;
       }
       if (op == 2) {
@@ -181,7 +184,8 @@ void run_ops(BP& bp, Reader& r) {
       if (!box) continue;
       std::vector<ProxyId> got, want;
       const Filter qf = query_filter(bits);
-      bp.query(Aabb<T>::make(c.min, c.max).value(), [&](ProxyId id) { got.push_back(id); }, qf);
+      bp.query(
+          Aabb<T>::make(c.min, c.max).value(), [&](ProxyId id) { got.push_back(id); }, qf);
       for (const Entry<T>& e : model) {
         if (e.live && boxes_overlap(e.box, *box) && accepts(e.filter, qf)) want.push_back(e.id);
       }
@@ -198,7 +202,8 @@ void run_ops(BP& bp, Reader& r) {
       std::vector<std::pair<ProxyId, Calc>> got, want;
       const Filter qf = query_filter(bits);
       const auto err = error_of([&] {
-        bp.raycast(origin, dir, max_t, [&](ProxyId id, Calc t) { got.emplace_back(id, t); }, qf);
+        bp.raycast(
+            origin, dir, max_t, [&](ProxyId id, Calc t) { got.emplace_back(id, t); }, qf);
       });
       const bool valid = origin.allFinite() && dir.allFinite() && std::isfinite(max_t) && max_t >= T(0);
       if (!valid) {

@@ -101,8 +101,8 @@ bool valid_motion(const laws::CastInput<T>& in) {
   for (const double v : {double(in.va.x()), double(in.va.y()), double(in.vb.x()), double(in.vb.y())}) {
     if (!std::isfinite(v) || std::fabs(v) > lim) return false;
   }
-  const double travel = std::max({(widen(in.va) - widen(in.vb)).cwiseAbs().maxCoeff(), widen(in.va).cwiseAbs().maxCoeff(),
-                                  widen(in.vb).cwiseAbs().maxCoeff()});
+  const double travel = std::max({(widen(in.va) - widen(in.vb)).cwiseAbs().maxCoeff(),
+                                  widen(in.va).cwiseAbs().maxCoeff(), widen(in.vb).cwiseAbs().maxCoeff()});
   return travel * mt <= 2 * lim;
 }
 

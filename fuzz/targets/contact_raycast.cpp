@@ -41,10 +41,11 @@ RayCase<T> read_ray(Reader& r) {
 /// invalid: the law expects the library's named rejection then).
 template <class F>
 void decode_case(Reader& r, F&& f) {
-  with_placed_pair(r, [&](const PairHeader&, const auto& a, const auto& xa, const auto& b, const auto& xb, Reader& rest) {
-    using T = scalar_of_t<std::remove_cvref_t<decltype(a)>>;
-    f(a, xa, b, xb, read_ray<T>(rest));
-  });
+  with_placed_pair(r,
+                   [&](const PairHeader&, const auto& a, const auto& xa, const auto& b, const auto& xb, Reader& rest) {
+                     using T = scalar_of_t<std::remove_cvref_t<decltype(a)>>;
+                     f(a, xa, b, xb, read_ray<T>(rest));
+                   });
 }
 
 template <Scalar T>
@@ -55,7 +56,8 @@ bool valid_ray(const RayCase<T>& r) {
 }
 
 template <Scalar T>
-void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb, const RayCase<T>& ray) {
+void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb,
+           const RayCase<T>& ray) {
   const bool placed = !xa.is_identity() || !xb.is_identity();
   try {
     if (placed) {

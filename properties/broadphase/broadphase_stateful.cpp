@@ -30,8 +30,7 @@ namespace {
 /// Counters printed at the end, so a run shows what it exercised.
 struct Stats {
   std::atomic<long> commands{0}, pairs_checked{0}, touching_pairs{0}, queries{0}, rays{0}, ray_hits{0},
-      errors_checked{0}, sequences{0}, updates{0}, began{0}, ended{0}, filtered_out{0}, world_steps{0},
-      world_events{0};
+      errors_checked{0}, sequences{0}, updates{0}, began{0}, ended{0}, filtered_out{0}, world_steps{0}, world_events{0};
 };
 Stats g_stats;
 
@@ -73,18 +72,22 @@ struct Sut {
 
 /// Filters from three category bits: mostly the default, sometimes restrictive (mask 0 included).
 inline rc::Gen<bp::Filter> gen_filter() {
-  return rc::gen::weightedOneOf<bp::Filter>(
-      {{3, rc::gen::just(bp::Filter{})},
-       {2, rc::gen::apply([](int c, int m) { return bp::Filter{std::uint32_t(c), std::uint32_t(m)}; },
-                          rc::gen::inRange(1, 8), rc::gen::inRange(0, 8))}});
+  return rc::gen::weightedOneOf<bp::Filter>({{3, rc::gen::just(bp::Filter{})},
+                                             {2, rc::gen::apply(
+                                                     [](int c, int m) {
+                                                       return bp::Filter{std::uint32_t(c), std::uint32_t(m)};
+                                                     },
+                                                     rc::gen::inRange(1, 8), rc::gen::inRange(0, 8))}});
 }
 
 /// Query filters: mostly everything, sometimes three random bits.
 inline rc::Gen<bp::Filter> gen_query_filter() {
-  return rc::gen::weightedOneOf<bp::Filter>(
-      {{1, rc::gen::just(bp::Filter::everything())},
-       {1, rc::gen::apply([](int c, int m) { return bp::Filter{std::uint32_t(c), std::uint32_t(m)}; },
-                          rc::gen::inRange(0, 8), rc::gen::inRange(0, 8))}});
+  return rc::gen::weightedOneOf<bp::Filter>({{1, rc::gen::just(bp::Filter::everything())},
+                                             {1, rc::gen::apply(
+                                                     [](int c, int m) {
+                                                       return bp::Filter{std::uint32_t(c), std::uint32_t(m)};
+                                                     },
+                                                     rc::gen::inRange(0, 8), rc::gen::inRange(0, 8))}});
 }
 
 /// Dyadic coordinates on a half-unit lattice (many exact touches), sometimes far away or huge,
@@ -184,14 +187,13 @@ struct Move : rc::state::Command<Model<T>, Sut<T>> {
     RC_PRE(!live.empty());
     k = *rc::gen::elementOf(live);
     // Mostly small coherent steps, sometimes a jump anywhere.
-    box = *rc::gen::weightedOneOf<bp::Box<T>>(
-        {{3, rc::gen::apply(
-                 [b = m[k].box](int dx, int dy) {
-                   const Vec2<T> d(T(dx) / 4, T(dy) / 4);
-                   return bp::Box<T>{b.min + d, b.max + d};
-                 },
-                 rc::gen::inRange(-3, 4), rc::gen::inRange(-3, 4))},
-         {1, gen_box<T>()}});
+    box = *rc::gen::weightedOneOf<bp::Box<T>>({{3, rc::gen::apply(
+                                                       [b = m[k].box](int dx, int dy) {
+                                                         const Vec2<T> d(T(dx) / 4, T(dy) / 4);
+                                                         return bp::Box<T>{b.min + d, b.max + d};
+                                                       },
+                                                       rc::gen::inRange(-3, 4), rc::gen::inRange(-3, 4))},
+                                               {1, gen_box<T>()}});
   }
   std::size_t k = 0;
   bp::Box<T> box;
@@ -276,8 +278,9 @@ struct AddBad : rc::state::Command<Model<T>, Sut<T>> {
   int which = *rc::gen::inRange(0, 3);
   void apply(Model<T>&) const override {}
   void run(const Model<T>&, Sut<T>& s) const override {
-    const T bad = which == 0 ? std::numeric_limits<T>::quiet_NaN()
-                             : which == 1 ? std::numeric_limits<T>::infinity() : T(-5);
+    const T bad = which == 0   ? std::numeric_limits<T>::quiet_NaN()
+                  : which == 1 ? std::numeric_limits<T>::infinity()
+                               : T(-5);
     const std::size_t n = s.tree.size();
     for (int target = 0; target < 3; ++target) {
       try {
@@ -373,9 +376,8 @@ struct Update : rc::state::Command<Model<T>, Sut<T>> {
           RC_ASSERT(std::binary_search(now.begin(), now.end(), P(std::min(k, x), std::max(k, x))));
           ++partners;
         });
-        RC_ASSERT(partners == std::size_t(std::count_if(now.begin(), now.end(), [&](const P& p) {
-                    return p.first == k || p.second == k;
-                  })));
+        RC_ASSERT(partners == std::size_t(std::count_if(now.begin(), now.end(),
+                                                        [&](const P& p) { return p.first == k || p.second == k; })));
       }
     };
     check(s.ttree);
@@ -401,7 +403,8 @@ struct Query : rc::state::Command<Model<T>, Sut<T>> {
       if (m[i].live && bp::boxes_overlap(m[i].box, q) && bp::accepts(m[i].filter, filter)) expected.push_back(i);
     const auto collect = [&](const auto& b) {
       std::vector<std::size_t> got;
-      b.query(to_aabb(q), [&](bp::ProxyId id) { got.push_back(b.user_data(id)); }, filter);
+      b.query(
+          to_aabb(q), [&](bp::ProxyId id) { got.push_back(b.user_data(id)); }, filter);
       std::sort(got.begin(), got.end());  // duplicates stay and fail the comparison
       return got;
     };
@@ -522,10 +525,10 @@ void check_stateful() {
   Model<T> initial;
   Sut<T> sut;
   ++g_stats.sequences;
-  rc::state::check(initial, sut,
-                   rc::state::gen::execOneOfWithArgs<Add<T>, Add<T>, Add<T>, Move<T>, Move<T>, Remove<T>,
-                                                     UseStale<T>, AddBad<T>, SetFilter<T>, Query<T>, Raycast<T>,
-                                                     Pairs<T>, Update<T>, Update<T>>());
+  rc::state::check(
+      initial, sut,
+      rc::state::gen::execOneOfWithArgs<Add<T>, Add<T>, Add<T>, Move<T>, Move<T>, Remove<T>, UseStale<T>, AddBad<T>,
+                                        SetFilter<T>, Query<T>, Raycast<T>, Pairs<T>, Update<T>, Update<T>>());
 }
 
 template <class T>
@@ -535,11 +538,10 @@ rc::Gen<collide::Shape<T>> gen_shape() {
   return rc::gen::oneOf(
       rc::gen::apply([c](int x, int y, int r) { return S(collide::Circle<T>(Vec2<T>(c(x), c(y)), c(r))); },
                      rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(0, 12)),
-      rc::gen::apply(
-          [c](int x, int y, int w, int h) {
-            return S(collide::Aabb<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + w), c(y + h))));
-          },
-          rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(0, 16), rc::gen::inRange(0, 16)),
+      rc::gen::apply([c](int x, int y, int w,
+                         int h) { return S(collide::Aabb<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + w), c(y + h)))); },
+                     rc::gen::inRange(-40, 41), rc::gen::inRange(-40, 41), rc::gen::inRange(0, 16),
+                     rc::gen::inRange(0, 16)),
       rc::gen::apply(
           [c](int x, int y, int dx, int dy, int r) {
             return S(collide::Capsule<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + dx), c(y + dy)), c(r)));
@@ -646,7 +648,8 @@ void check_world_steps(BP structure) {
     const bp::PairEvents& e = w.step();
     const auto as_model = [&](const std::vector<bp::ProxyPair>& ps) {
       std::vector<P> out;
-      for (const auto& p : ps) out.emplace_back(std::min(index.at(p.a), index.at(p.b)), std::max(index.at(p.a), index.at(p.b)));
+      for (const auto& p : ps)
+        out.emplace_back(std::min(index.at(p.a), index.at(p.b)), std::max(index.at(p.a), index.at(p.b)));
       std::sort(out.begin(), out.end());
       return out;
     };
@@ -669,8 +672,10 @@ void check_world_steps(BP structure) {
     if (collide::contains(model[i].shape, p)) want_point.push_back(i);
     if (collide::overlaps(probe, model[i].shape)) want_shape.push_back(i);
   }
-  w.query_point(p, [&](bp::ProxyId id) { got_point.push_back(index.at(id)); }, qf);
-  w.query_shape(probe, [&](bp::ProxyId id) { got_shape.push_back(index.at(id)); }, qf);
+  w.query_point(
+      p, [&](bp::ProxyId id) { got_point.push_back(index.at(id)); }, qf);
+  w.query_shape(
+      probe, [&](bp::ProxyId id) { got_shape.push_back(index.at(id)); }, qf);
   std::sort(got_point.begin(), got_point.end());
   std::sort(got_shape.begin(), got_shape.end());
   RC_ASSERT(got_point == want_point);
@@ -702,8 +707,12 @@ RC_GTEST_PROP(BroadphaseWorld, DoubleStepsReportBeganAndEndedContacts, ()) {
   check_world_steps<double>(bp::UniformGrid<double>(2.0));
 }
 
-RC_GTEST_PROP(BroadphaseStateful, FloatMatchesBruteForceModel, ()) { check_stateful<float>(); }
-RC_GTEST_PROP(BroadphaseStateful, DoubleMatchesBruteForceModel, ()) { check_stateful<double>(); }
+RC_GTEST_PROP(BroadphaseStateful, FloatMatchesBruteForceModel, ()) {
+  check_stateful<float>();
+}
+RC_GTEST_PROP(BroadphaseStateful, DoubleMatchesBruteForceModel, ()) {
+  check_stateful<double>();
+}
 
 RC_GTEST_PROP(BroadphaseWorld, FloatSameAsAllPairs, ()) {
   check_world<float>(*rc::gen::container<std::vector<collide::Shape<float>>>(gen_shape<float>()));
@@ -719,8 +728,12 @@ void world_ray_property() {
   const Vec2<T> d(T(*rc::gen::inRange(-16, 17)) / 2, T(*rc::gen::inRange(-16, 17)) / 2);
   check_world_ray<T>(shapes, o, d, T(*rc::gen::inRange(0, 9)) / 2);
 }
-RC_GTEST_PROP(BroadphaseWorld, FloatRaycastSameAsEveryShape, ()) { world_ray_property<float>(); }
-RC_GTEST_PROP(BroadphaseWorld, DoubleRaycastSameAsEveryShape, ()) { world_ray_property<double>(); }
+RC_GTEST_PROP(BroadphaseWorld, FloatRaycastSameAsEveryShape, ()) {
+  world_ray_property<float>();
+}
+RC_GTEST_PROP(BroadphaseWorld, DoubleRaycastSameAsEveryShape, ()) {
+  world_ray_property<double>();
+}
 
 TEST(BroadphaseErrors, NamedErrorsForBadConfiguration) {
   EXPECT_THROW(bp::DynamicTree<float>(-1.0f), bp::BroadphaseError);

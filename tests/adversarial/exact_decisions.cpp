@@ -49,7 +49,7 @@ struct Rng {
 
 /// A shape in local coordinates (doubles), placed later by scale and offset into T.
 struct Local {
-  int kind = 0;  // 0 circle, 1 aabb, 2 obb, 3 capsule, 4 polygon
+  int kind = 0;            // 0 circle, 1 aabb, 2 obb, 3 capsule, 4 polygon
   std::vector<Vec2c> pts;  // circle: centre; aabb: min, max; obb: centre; capsule: a, b; polygon
   double r = 0;            // radius
   Vec2c half = Vec2c::Zero();
@@ -62,11 +62,16 @@ const char* kKindName[] = {"circle", "aabb", "obb", "capsule", "polygon", "compo
 double pick_angle(Rng& g) {
   const double q = std::numbers::pi / 2;
   switch (g.below(5)) {
-    case 0: return g.in(0, 2 * std::numbers::pi);
-    case 1: return q * g.below(4);
-    case 2: return q / 2 * (2 * g.below(4) + 1);
-    case 3: return q * g.below(4) + (g.below(2) ? 1 : -1) * std::ldexp(1.0, -20 - g.below(34));
-    default: return g.in(0, 2 * std::numbers::pi) + std::ldexp(1.0, -g.below(60));
+    case 0:
+      return g.in(0, 2 * std::numbers::pi);
+    case 1:
+      return q * g.below(4);
+    case 2:
+      return q / 2 * (2 * g.below(4) + 1);
+    case 3:
+      return q * g.below(4) + (g.below(2) ? 1 : -1) * std::ldexp(1.0, -20 - g.below(34));
+    default:
+      return g.in(0, 2 * std::numbers::pi) + std::ldexp(1.0, -g.below(60));
   }
 }
 
@@ -224,13 +229,15 @@ std::optional<Shape<T>> nudged(const Shape<T>& s, int kx, int ky) {
     if (!r) return std::nullopt;
     return Shape<T>(r.value());
   }
-  auto p = std::visit([&](const auto& x) -> std::optional<Primitive<T>> {
-    if constexpr (std::is_same_v<std::remove_cvref_t<decltype(x)>, Compound<T>>) {
-      return std::nullopt;
-    } else {
-      return prim(x);
-    }
-  }, s);
+  auto p = std::visit(
+      [&](const auto& x) -> std::optional<Primitive<T>> {
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(x)>, Compound<T>>) {
+          return std::nullopt;
+        } else {
+          return prim(x);
+        }
+      },
+      s);
   if (!p) return std::nullopt;
   return std::visit([](const auto& x) { return Shape<T>(x); }, *p);
 }
@@ -249,7 +256,10 @@ std::optional<std::pair<double, double>> flip(F&& f, double hi) {
     std::memcpy(&x, &m, 8);
     const std::optional<bool> fm = f(x);
     if (!fm) return std::nullopt;
-    if (*fm == *flo) a = m; else b = m;
+    if (*fm == *flo)
+      a = m;
+    else
+      b = m;
   }
   double x, y;
   std::memcpy(&x, &a, 8);
@@ -325,14 +335,14 @@ void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Sha
   if (got == exact) return;
   ++t.disagreements;
   if (++t.bad_label[label] <= 2 && !t.save_dir.empty()) {
-    const auto path = laws::save_case(t.save_dir, laws::make_case<T>(laws::Law::Agreement, a, b, laws::agreement(a, b),
-                                                                     "adversarial exact_decisions seed " +
-                                                                         std::to_string(t.seed)));
+    const auto path =
+        laws::save_case(t.save_dir, laws::make_case<T>(laws::Law::Agreement, a, b, laws::agreement(a, b),
+                                                       "adversarial exact_decisions seed " + std::to_string(t.seed)));
     std::printf("saved %s\n", path.string().c_str());
   }
   if (t.printed++ < 8)
-    std::printf("DISAGREE %s: overlaps %d, exact %d\n  a = %s\n  b = %s\n", label.c_str(), got, exact,
-                text(a).c_str(), text(b).c_str());
+    std::printf("DISAGREE %s: overlaps %d, exact %d\n  a = %s\n  b = %s\n", label.c_str(), got, exact, text(a).c_str(),
+                text(b).c_str());
 }
 
 template <Scalar T>
@@ -402,9 +412,7 @@ void one_boundary(Rng& g, Tally& t) {
   if (g.below(4) == 0) {  // contains
     const std::string label = std::string("contains-") + kKindName[ka] + "-" + scalar;
     const Vec2c start = pa[0].pts[0];
-    auto point_at = [&](double lam) {
-      return Vec2<T>((offset + scale * (start + lam * dir)).template cast<T>());
-    };
+    auto point_at = [&](double lam) { return Vec2<T>((offset + scale * (start + lam * dir)).template cast<T>()); };
     const auto f = flip([&](double lam) -> std::optional<bool> { return contains(*a, point_at(lam)); }, 4.0);
     if (!f) {
       ++t.skipped;
@@ -494,10 +502,11 @@ int main(int argc, char** argv) {
     }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("exact decisions: %llu cases (%llu overlaps, %llu contains; %llu generated boundaries skipped), "
-              "%llu disagreements, %.1f s, seed %llu\n",
-              (unsigned long long)t.cases, (unsigned long long)t.overlap_cases, (unsigned long long)t.contains_cases,
-              (unsigned long long)t.skipped, (unsigned long long)t.disagreements, secs, (unsigned long long)seed);
+  std::printf(
+      "exact decisions: %llu cases (%llu overlaps, %llu contains; %llu generated boundaries skipped), "
+      "%llu disagreements, %.1f s, seed %llu\n",
+      (unsigned long long)t.cases, (unsigned long long)t.overlap_cases, (unsigned long long)t.contains_cases,
+      (unsigned long long)t.skipped, (unsigned long long)t.disagreements, secs, (unsigned long long)seed);
   std::printf("filter decided %.1f %% of these calls without an exact evaluation\n",
               100.0 * double(t.cases - t.exact_calls) / double(t.cases));
   for (const auto& [label, n] : t.per_label) {

@@ -41,14 +41,14 @@ int replay_all(const std::vector<std::string>& args) {
     try {
       const laws::Case c = laws::read_case(f);
       const laws::Verdict v = laws::replay(c);
-      std::cout << (v.ok ? "PASS " : "FAIL ") << f.filename().string() << "  [" << laws::name(c.law) << " " << laws::pair_name(c)
-                << " " << c.scalar << "]";
+      std::cout << (v.ok ? "PASS " : "FAIL ") << f.filename().string() << "  [" << laws::name(c.law) << " "
+                << laws::pair_name(c) << " " << c.scalar << "]";
       if (v.disagreement) std::cout << " (disagreement within the band)";
       std::cout << '\n';
       if (!v.ok) {
         ++failed;
-        std::cout << "     expected: " << v.expected << "\n     got:      " << v.got << "\n     account:  "
-                  << v.account << "\n     found by: " << c.source << '\n';
+        std::cout << "     expected: " << v.expected << "\n     got:      " << v.got << "\n     account:  " << v.account
+                  << "\n     found by: " << c.source << '\n';
       }
     } catch (const std::exception& e) {
       ++failed;
@@ -77,9 +77,11 @@ int round_trip_shapes() {
       ConvexPolygon<T>({V(T(0), T(0)), V(T(2), T(0.1)), V(T(1), T(3))}),
       Compound<T>({Circle<T>(V(T(5), T(5)), T(1)), Aabb<T>(V(T(0), T(0)), V(T(1), T(1)))}),
       // Children placed by child transforms: a quarter turn, a rounded rotation, the identity.
-      Compound<T>::make_placed({{Aabb<T>(V(T(0), T(0)), V(T(2), T(1))), Transform<T>::make_with_rotation(V(T(3), T(-1)), V(T(0), T(1))).value()},
-                                {Capsule<T>(V(T(0), T(0)), V(T(1), T(0)), T(0.5)), Transform<T>::make(V(T(0.1), T(7)), T(0.3)).value()},
-                                {Circle<T>(V(T(5), T(5)), T(1)), Transform<T>()}})
+      Compound<T>::make_placed(
+          {{Aabb<T>(V(T(0), T(0)), V(T(2), T(1))),
+            Transform<T>::make_with_rotation(V(T(3), T(-1)), V(T(0), T(1))).value()},
+           {Capsule<T>(V(T(0), T(0)), V(T(1), T(0)), T(0.5)), Transform<T>::make(V(T(0.1), T(7)), T(0.3)).value()},
+           {Circle<T>(V(T(5), T(5)), T(1)), Transform<T>()}})
           .value(),
   };
   for (const Shape<T>& s : shapes) {
@@ -202,9 +204,9 @@ int self_test() {
   const laws::Case pc = laws::read_case(placed);
   std::stringstream placed_again;
   laws::write_case(placed_again, pc);
-  bad += check(placed_again.str().find("transform a 0x1p+0 0x0p+0 0x0p+0 0x1p+0") != std::string::npos &&
-                   !pc.transform_b,
-               "a transform line survives read_case and write_case");
+  bad +=
+      check(placed_again.str().find("transform a 0x1p+0 0x0p+0 0x0p+0 0x1p+0") != std::string::npos && !pc.transform_b,
+            "a transform line survives read_case and write_case");
   bad += check(laws::replay(pc).got.find("takes no transform") != std::string::npos,
                "a law without transforms refuses a case with one, by name");
   bool refused = false;

@@ -26,11 +26,21 @@ __attribute__((noinline)) void* operator new(std::size_t n) {
   if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
   throw std::bad_alloc();
 }
-__attribute__((noinline)) void* operator new[](std::size_t n) { return operator new(n); }
-__attribute__((noinline)) void operator delete(void* p) noexcept { std::free(p); }
-__attribute__((noinline)) void operator delete[](void* p) noexcept { std::free(p); }
-__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-__attribute__((noinline)) void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+__attribute__((noinline)) void* operator new[](std::size_t n) {
+  return operator new(n);
+}
+__attribute__((noinline)) void operator delete(void* p) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+__attribute__((noinline)) void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace collide::test {
 namespace {
@@ -180,8 +190,8 @@ TYPED_TEST(Allocation, SuccessfulFactoriesDoNotAllocate) {
   using V = Vec2<T>;
   const V octagon[] = {V(2, 0), V(1.5, 1.5), V(0, 2), V(-1.5, 1.5), V(-2, 0), V(-1.5, -1.5), V(0, -2), V(1.5, -1.5)};
   // Points whose hull is the octagon above, with interior points and repeats mixed in.
-  const V cloud[] = {V(0, 0),  V(2, 0),  V(1.5, 1.5), V(0, 2),  V(0.5, 0.5),  V(-1.5, 1.5),
-                     V(-2, 0), V(2, 0),  V(-1.5, -1.5), V(0, -2), V(1.5, -1.5), V(-1, 1)};
+  const V cloud[] = {V(0, 0),  V(2, 0), V(1.5, 1.5),   V(0, 2),  V(0.5, 0.5),  V(-1.5, 1.5),
+                     V(-2, 0), V(2, 0), V(-1.5, -1.5), V(0, -2), V(1.5, -1.5), V(-1, 1)};
   EXPECT_EQ(0, allocations_in([&] {
               keep(Circle<T>::make(V(1, 2), T(3)));
               keep(Aabb<T>::make(V(-1, -2), V(3, 4)));

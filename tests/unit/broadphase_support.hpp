@@ -32,9 +32,8 @@ template <class S>
 using ScalarOf = std::remove_cvref_t<decltype(std::declval<S>().box(broadphase::ProxyId{}).min().x())>;
 
 /// The three structures in both scalars, for typed tests.
-using BroadphaseStructures =
-    ::testing::Types<broadphase::DynamicTree<float>, broadphase::SweepAndPrune<float>, broadphase::UniformGrid<float>,
-                     broadphase::DynamicTree<double>, broadphase::SweepAndPrune<double>,
-                     broadphase::UniformGrid<double>>;
+using BroadphaseStructures = ::testing::Types<broadphase::DynamicTree<float>, broadphase::SweepAndPrune<float>,
+                                              broadphase::UniformGrid<float>, broadphase::DynamicTree<double>,
+                                              broadphase::SweepAndPrune<double>, broadphase::UniformGrid<double>>;
 
 }  // namespace collide::test

@@ -102,10 +102,10 @@ TYPED_TEST(BroadphaseUnit, PairsAreTheOverlappingStoredBoxesTouchingIncluded) {
   using T = ScalarOf<TypeParam>;
   TypeParam s = make<TypeParam>();
   s.add(box<T>(0, 0, 1, 1), 0);
-  s.add(box<T>(1, 0, 2, 1), 1);        // touches 0 along x = 1
-  s.add(box<T>(T(2.5), 0, 3, 1), 2);   // 0.5 from 1: apart
+  s.add(box<T>(1, 0, 2, 1), 1);                      // touches 0 along x = 1
+  s.add(box<T>(T(2.5), 0, 3, 1), 2);                 // 0.5 from 1: apart
   s.add(box<T>(T(0.5), T(0.5), T(0.6), T(0.6)), 3);  // inside 0
-  s.add(box<T>(1, 1, 4, 4), 4);        // touches 0 and 1 at corners / edges, 2 along y = 1
+  s.add(box<T>(1, 1, 4, 4), 4);                      // touches 0 and 1 at corners / edges, 2 along y = 1
   EXPECT_EQ(user_pairs(s), (UP{{0, 1}, {0, 3}, {0, 4}, {1, 4}, {2, 4}}));
   EXPECT_EQ(s.pairs(bp::PairOrder::Sorted).size(), 5u);
 }
@@ -213,15 +213,17 @@ TYPED_TEST(BroadphaseUnit, FiltersDecidePairsQueriesAndRays) {
   // All five boxes except the ghost overlap pairwise; bullets meet only players.
   EXPECT_EQ(user_pairs(s), (UP{{0, 1}, {0, 2}, {1, 4}, {2, 4}}));
   U hits;
-  s.query(box<T>(0, 0, 4, 4), [&](bp::ProxyId id) { hits.push_back(s.user_data(id)); }, bp::Filter{0xffffffffu, 2});
+  s.query(
+      box<T>(0, 0, 4, 4), [&](bp::ProxyId id) { hits.push_back(s.user_data(id)); }, bp::Filter{0xffffffffu, 2});
   std::sort(hits.begin(), hits.end());
   EXPECT_EQ(hits, (U{1}));
   std::size_t rays = 0;
-  s.raycast(Vec2<T>(-1, T(0.5)), Vec2<T>(1, 0), T(10), [&](bp::ProxyId, Calc) { ++rays; },
-            bp::Filter{0xffffffffu, 1});
+  s.raycast(
+      Vec2<T>(-1, T(0.5)), Vec2<T>(1, 0), T(10), [&](bp::ProxyId, Calc) { ++rays; }, bp::Filter{0xffffffffu, 1});
   EXPECT_EQ(rays, 2u);  // the two players
   rays = 0;
-  s.raycast(Vec2<T>(-1, T(0.5)), Vec2<T>(1, 0), T(10), [&](bp::ProxyId, Calc) { ++rays; }, bp::Filter{1, 1});
+  s.raycast(
+      Vec2<T>(-1, T(0.5)), Vec2<T>(1, 0), T(10), [&](bp::ProxyId, Calc) { ++rays; }, bp::Filter{1, 1});
   EXPECT_EQ(rays, 0u);  // players do not accept category 1
   s.set_filter(p4, wall);
   EXPECT_EQ(user_pairs(s), (UP{{0, 1}, {0, 2}, {0, 4}}));
@@ -237,8 +239,7 @@ TYPED_TEST(BroadphaseUnit, PointQueryAndClosestHit) {
   s.query_point(Vec2<T>(T(2.5), 1), [&](bp::ProxyId id) { at.push_back(s.user_data(id)); });
   std::sort(at.begin(), at.end());
   EXPECT_EQ(at, (U{1, 2}));  // a corner and an edge: closed boxes
-  EXPECT_THROW(s.query_point(Vec2<T>(std::numeric_limits<T>::quiet_NaN(), 0), [](bp::ProxyId) {}),
-               bp::BroadphaseError);
+  EXPECT_THROW(s.query_point(Vec2<T>(std::numeric_limits<T>::quiet_NaN(), 0), [](bp::ProxyId) {}), bp::BroadphaseError);
   const auto hit = s.raycast_closest(Vec2<T>(5, T(0.5)), Vec2<T>(-1, 0), T(10));
   ASSERT_TRUE(hit.has_value());
   EXPECT_EQ(s.user_data(hit->id), 2u);
@@ -282,9 +283,9 @@ TEST(BroadphaseTreeBoxes, FatBoxKeptForSmallMovesAndRebuiltForLargeOnes) {
   t.move(a, box<double>(5, 5, 6, 6));  // outside: refattened around the new box, stretched ahead
   EXPECT_EQ(t.fat_box(a).min(), Vec2<double>(4, 4));
   EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(9, 9));  // 4 x 4.5 ahead, capped at extent + margin
-  t.move(a, box<double>(5.25, 4.5, 6.25, 5.5));   // still inside
+  t.move(a, box<double>(5.25, 4.5, 6.25, 5.5));       // still inside
   EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(9, 9));
-  t.move(a, box<double>(4.5, 2.75, 5.5, 3.75));  // leaves it down and left: stretched that way
+  t.move(a, box<double>(4.5, 2.75, 5.5, 3.75));             // leaves it down and left: stretched that way
   EXPECT_EQ(t.fat_box(a).min(), Vec2<double>(1.5, -0.25));  // 4 x (-0.75, -1.75), capped at -2
   EXPECT_EQ(t.fat_box(a).max(), Vec2<double>(6.5, 4.75));
   EXPECT_TRUE(t.check_invariants());

@@ -40,7 +40,9 @@ std::vector<bp::ProxyId> add_row(S& s, int n) {
 }
 
 /// Box i of the row meets boxes i-2 .. i+2 (closed: i +- 2 touch).
-int row_neighbours(int i, int n) { return std::min(n - 1, i + 2) - std::max(0, i - 2) + 1; }
+int row_neighbours(int i, int n) {
+  return std::min(n - 1, i + 2) - std::max(0, i - 2) + 1;
+}
 
 TYPED_TEST(BroadphaseReentrant, QueryInsideQueryCallbackIsExact) {
   using T = ScalarOf<TypeParam>;
@@ -82,8 +84,8 @@ TYPED_TEST(BroadphaseReentrant, RaycastAndQueryNestedBothWaysAreExact) {
     c.raycast(Vec2<T>(-1, T(0.5)), Vec2<T>(1, 0), T(20), [&](bp::ProxyId, Calc) { ++rays; });
     c.for_each_pair([&](bp::ProxyId, bp::ProxyId) { ++pairs_seen; });
   });
-  EXPECT_EQ(rays, 3 * 11);                 // boxes 0, 1, 2 meet [0, 1]^2
-  EXPECT_EQ(pairs_seen, 3 * (10 + 9));     // each pair (i, i+1) and (i, i+2) once per outer hit
+  EXPECT_EQ(rays, 3 * 11);              // boxes 0, 1, 2 meet [0, 1]^2
+  EXPECT_EQ(pairs_seen, 3 * (10 + 9));  // each pair (i, i+1) and (i, i+2) once per outer hit
 }
 
 TYPED_TEST(BroadphaseReentrant, QueryInsideAnotherStructuresCallbackIsExact) {
@@ -92,9 +94,8 @@ TYPED_TEST(BroadphaseReentrant, QueryInsideAnotherStructuresCallbackIsExact) {
   add_row(a, 11);
   add_row(b, 11);
   int inner = 0;
-  a.query(Aabb<T>(Vec2<T>(-1, -1), Vec2<T>(10, 2)), [&](bp::ProxyId id) {
-    b.query(a.box(id), [&](bp::ProxyId) { ++inner; });
-  });
+  a.query(Aabb<T>(Vec2<T>(-1, -1), Vec2<T>(10, 2)),
+          [&](bp::ProxyId id) { b.query(a.box(id), [&](bp::ProxyId) { ++inner; }); });
   EXPECT_EQ(inner, 11 + 2 * 10 + 2 * 9);
 }
 
@@ -109,9 +110,8 @@ std::vector<std::uint64_t> answers(const S& s, const std::vector<Aabb<ScalarOf<S
       hits.push_back(s.user_data(id));
       s.query(s.box(id), [&](bp::ProxyId) { hits.push_back(1u << 20); });  // nested as well
     });
-    s.raycast(q.min(), Vec2<T>(q.max() - q.min()) * T(4), T(1), [&](bp::ProxyId id, Calc) {
-      hits.push_back(s.user_data(id) + (1u << 21));
-    });
+    s.raycast(q.min(), Vec2<T>(q.max() - q.min()) * T(4), T(1),
+              [&](bp::ProxyId id, Calc) { hits.push_back(s.user_data(id) + (1u << 21)); });
     std::sort(hits.begin(), hits.end());
     out.insert(out.end(), hits.begin(), hits.end());
     out.push_back(~std::uint64_t{0});

@@ -37,7 +37,8 @@ auto as_double(const S& s) {
 
 template <class A, class B, Scalar T>
 bool overlap_at(const A& a, const Vec2<T>& va, const B& b, const Vec2<T>& vb, double t) {
-  return overlaps(moved_by(as_double(a), Vec2<double>(widen(va) * t)), moved_by(as_double(b), Vec2<double>(widen(vb) * t)));
+  return overlaps(moved_by(as_double(a), Vec2<double>(widen(va) * t)),
+                  moved_by(as_double(b), Vec2<double>(widen(vb) * t)));
 }
 
 TYPED_TEST(Cast, BulletDoesNotTunnelThroughThinWall) {

@@ -28,7 +28,7 @@ TYPED_TEST(Contains, AabbIsExactToTheUlp) {
   const Aabb<T> box(V(0, 0), V(1, 1));
   EXPECT_TRUE(contains(box, V(1, 1)));  // closed: the corner belongs to the box
   EXPECT_TRUE(contains(box, V(0, T(0.5))));
-  EXPECT_FALSE(contains(box, V(1, up(T(1)))));  // one ulp out
+  EXPECT_FALSE(contains(box, V(1, up(T(1)))));         // one ulp out
   EXPECT_FALSE(contains(box, V(down(T(0)), T(0.5))));  // the smallest negative subnormal out
   const T nan = std::numeric_limits<T>::quiet_NaN(), inf = std::numeric_limits<T>::infinity();
   EXPECT_FALSE(contains(box, V(nan, T(0.5))));

@@ -36,10 +36,10 @@ TYPED_TEST(CourseNotes, AabbFourNonCollisionCasesOneByOne) {
   // (the course notes' `b.max.y < a.min.x` slip) changes the answer in case 4.
   const Aabb<T> a(V(0, 10), V(2, 12));
   // Each b overlaps a on the other axis, so exactly one of the four conditions separates them.
-  const Aabb<T> right(V(3, 10), V(5, 12));  // a.max.x < b.min.x
+  const Aabb<T> right(V(3, 10), V(5, 12));   // a.max.x < b.min.x
   const Aabb<T> left(V(-5, 10), V(-1, 12));  // b.max.x < a.min.x
-  const Aabb<T> above(V(0, 13), V(2, 15));  // a.max.y < b.min.y
-  const Aabb<T> below(V(0, 5), V(2, 8));    // b.max.y < a.min.y
+  const Aabb<T> above(V(0, 13), V(2, 15));   // a.max.y < b.min.y
+  const Aabb<T> below(V(0, 5), V(2, 8));     // b.max.y < a.min.y
   EXPECT_FALSE(overlaps(a, right));
   EXPECT_FALSE(overlaps(a, left));
   EXPECT_FALSE(overlaps(a, above));

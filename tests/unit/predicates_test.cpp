@@ -10,7 +10,9 @@
 namespace collide::test {
 namespace {
 
-Vec2c v(double x, double y) { return Vec2c(x, y); }
+Vec2c v(double x, double y) {
+  return Vec2c(x, y);
+}
 
 TEST(Orient, NearCollinearIsExact) {
   // det = 1 - (1 + 2^-52) = -2^-52: below the filter's bound, decided by the exact expansion.

@@ -200,8 +200,7 @@ TYPED_TEST(Queries, DistanceHandComputed) {
   // Corner to corner: (1, 1) to (4, 5).
   EXPECT_NEAR(double(distance(Aabb<T>(V(0, 0), V(1, 1)), Aabb<T>(V(4, 5), V(5, 6)))), 5.0, tol<T>());
   // Edge of a polygon to a parallel edge of a box.
-  EXPECT_NEAR(double(distance(ConvexPolygon<T>{V(0, 0), V(1, 0), V(0, 1)}, Aabb<T>(V(2, -5), V(3, 5)))), 1.0,
-              tol<T>());
+  EXPECT_NEAR(double(distance(ConvexPolygon<T>{V(0, 0), V(1, 0), V(0, 1)}, Aabb<T>(V(2, -5), V(3, 5)))), 1.0, tol<T>());
   // Overlapping or touching: exactly 0.
   EXPECT_EQ(distance(Circle<T>(V(0, 0), 1), Circle<T>(V(2, 0), 1)), T(0));
   EXPECT_EQ(distance(Aabb<T>(V(0, 0), V(1, 1)), Aabb<T>(V(1, 1), V(2, 2))), T(0));

@@ -117,7 +117,7 @@ TYPED_TEST(Raycast, NeedlePolygonIsNotHitPastItsSharpCorner) {
 TYPED_TEST(Raycast, Capsule) {
   using T = TypeParam;
   const Capsule<T> cap(Vec2<T>(0, 0), Vec2<T>(4, 0), 1);
-  expect_hit(cap, ray<T>(2, 5, 0, -1), T(10), 4, 2, 1, 0, 1);   // the flat side
+  expect_hit(cap, ray<T>(2, 5, 0, -1), T(10), 4, 2, 1, 0, 1);    // the flat side
   expect_hit(cap, ray<T>(-5, 0, 1, 0), T(10), 4, -1, 0, -1, 0);  // the round end
   // The round end off-axis: line y = 0.6 meets the end disk at x = 4.8, normal (0.8, 0.6).
   expect_hit(cap, ray<T>(10, T(0.6), -1, 0), T(10), 5.2, 4.8, 0.6, 0.8, 0.6);
@@ -135,7 +135,7 @@ TYPED_TEST(Raycast, CompoundNearestChild) {
   const Compound<T> comp(std::move(kids));
   expect_hit(comp, ray<T>(10, 0, -1, 0), T(100), 6, 4, 0, 1, 0);  // box child first
   expect_hit(comp, ray<T>(2, 0, 1, 0), T(100), 1, 3, 0, -1, 0);
-  expect_hit(comp, ray<T>(2, 0, -1, 0), T(100), 1, 1, 0, 1, 0);   // circle child
+  expect_hit(comp, ray<T>(2, 0, -1, 0), T(100), 1, 1, 0, 1, 0);         // circle child
   EXPECT_FALSE(raycast(comp, ray<T>(2, 5, 1, 0), T(100)).has_value());  // bounds early-out
   const std::vector<Shape<T>> whole = {comp};
   expect_hit(whole[0], ray<T>(10, 0, -1, 0), T(100), 6, 4, 0, 1, 0);  // variant dispatch

@@ -31,16 +31,14 @@ int exact_sign(double p0, double q0, double q1, double r0, double r1, double s0,
 /// Extents are given as products e_i * f_i (f_i >= 0).
 void expect_covers(double lo, double hi, double c, double e1, double f1, double e2, double f2) {
   // lo - c + e1 f1 + e2 f2 <= 0
-  EXPECT_LE(exact_sign(lo, c, -1.0, e1, f1, e2, f2), 0)
-      << "low side " << lo << " vs centre " << c;
+  EXPECT_LE(exact_sign(lo, c, -1.0, e1, f1, e2, f2), 0) << "low side " << lo << " vs centre " << c;
   // c + e1 f1 + e2 f2 - hi <= 0
   EXPECT_LE(exact_sign(-hi, c, 1.0, e1, f1, e2, f2), 0) << "high side " << hi << " vs centre " << c;
 }
 
 template <Scalar T>
 void expect_conservative(const Aabb<T>& b, const Circle<T>& s) {
-  for (int i = 0; i < 2; ++i)
-    expect_covers(b.min()[i], b.max()[i], s.center()[i], s.radius(), 1.0, 0.0, 0.0);
+  for (int i = 0; i < 2; ++i) expect_covers(b.min()[i], b.max()[i], s.center()[i], s.radius(), 1.0, 0.0, 0.0);
 }
 template <Scalar T>
 void expect_conservative(const Aabb<T>& b, const Aabb<T>& s) {
@@ -76,7 +74,8 @@ void expect_conservative(const Aabb<T>& b, const Compound<T>& s) {
 template <Scalar T, class S>
 void expect_tight(const Aabb<T>& b, const S& s, double width_x, double width_y) {
   const double sc = detail::scale_of(b);
-  const double slack = 16 * double(std::numeric_limits<T>::epsilon()) * sc + 4 * double(std::numeric_limits<T>::denorm_min());
+  const double slack =
+      16 * double(std::numeric_limits<T>::epsilon()) * sc + 4 * double(std::numeric_limits<T>::denorm_min());
   EXPECT_LE(double(b.max().x()) - double(b.min().x()), width_x + 2 * slack);
   EXPECT_LE(double(b.max().y()) - double(b.min().y()), width_y + 2 * slack);
   static_cast<void>(s);
@@ -126,7 +125,7 @@ TYPED_TEST(Scale, OverlapTolerancesStayFiniteAndSmallAtTheLimit) {
   // differences reach 16x its square; nothing may overflow to inf or NaN.
   const T m = max_magnitude<T>();
   const Circle<T> a(Vec2<T>(m, m), m), b(Vec2<T>(-m, -m), m);
-  EXPECT_FALSE(overlaps(a, b));  // centres 2 sqrt(2) m apart, radii sum 2 m
+  EXPECT_FALSE(overlaps(a, b));             // centres 2 sqrt(2) m apart, radii sum 2 m
   EXPECT_EQ(overlap_tolerance(a, b), 0.0);  // decisions are exact
   const Calc tol = rounding_tolerance(a, b);
   EXPECT_TRUE(std::isfinite(tol));

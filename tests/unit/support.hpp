@@ -41,7 +41,9 @@ ShapeOf<K, T> make_kind(const Vec2<T>& c, T h) {
 }
 
 /// Kinds decided by exact predicates only (comparisons and orient()).
-constexpr bool exact_kind(ShapeKind k) { return k == ShapeKind::Aabb || k == ShapeKind::Polygon; }
+constexpr bool exact_kind(ShapeKind k) {
+  return k == ShapeKind::Aabb || k == ShapeKind::Polygon;
+}
 
 template <ShapeKind A, ShapeKind B>
 std::string pair_label() {

@@ -119,10 +119,11 @@ TYPED_TEST(Transforms, CompoundChildrenCarryTheirTransforms) {
   using V = Vec2<T>;
   using Child = typename Compound<T>::Child;
   // Two circles of radius 1 placed at x = -3 and x = +3 in the body's frame.
-  const Compound<T> body = Compound<T>::make_placed(std::vector<Child>{
-                                                       {Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(-3, 0)).value()},
-                                                       {Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(3, 0)).value()}})
-                               .value();
+  const Compound<T> body =
+      Compound<T>::make_placed(
+          std::vector<Child>{{Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(-3, 0)).value()},
+                             {Circle<T>(V(0, 0), 1), Transform<T>::make_translation(V(3, 0)).value()}})
+          .value();
   EXPECT_TRUE(body.has_child_transforms());
   EXPECT_LE(body.bounds().min().x(), T(-4));
   EXPECT_GT(body.bounds().min().x(), T(-4.001));

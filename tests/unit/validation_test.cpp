@@ -24,12 +24,18 @@ void expect_error(const E& r, Error code, long index) {
 }
 
 template <Scalar T>
-constexpr T nan_v() { return std::numeric_limits<T>::quiet_NaN(); }
+constexpr T nan_v() {
+  return std::numeric_limits<T>::quiet_NaN();
+}
 template <Scalar T>
-constexpr T inf_v() { return std::numeric_limits<T>::infinity(); }
+constexpr T inf_v() {
+  return std::numeric_limits<T>::infinity();
+}
 /// Finite but above max_magnitude<T>() (2^125 for float, 2^500 for double).
 template <Scalar T>
-constexpr T too_big() { return max_magnitude<T>() * T(2); }
+constexpr T too_big() {
+  return max_magnitude<T>() * T(2);
+}
 
 TYPED_TEST(Validation, Circle) {
   using T = TypeParam;
@@ -45,8 +51,8 @@ TYPED_TEST(Validation, Circle) {
   // Boundary values are valid: radius 0, magnitude exactly max_magnitude, subnormal.
   EXPECT_TRUE(Circle<T>::make(V(0, 0), T(0)).has_value());
   EXPECT_TRUE(Circle<T>::make(V(max_magnitude<T>(), -max_magnitude<T>()), max_magnitude<T>()).has_value());
-  EXPECT_TRUE(Circle<T>::make(V(std::numeric_limits<T>::denorm_min(), 0), std::numeric_limits<T>::denorm_min())
-                  .has_value());
+  EXPECT_TRUE(
+      Circle<T>::make(V(std::numeric_limits<T>::denorm_min(), 0), std::numeric_limits<T>::denorm_min()).has_value());
   EXPECT_THROW(Circle<T>(V(0, 0), T(-1)), ShapeError);
 }
 

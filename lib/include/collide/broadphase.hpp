@@ -41,8 +41,7 @@ namespace collide::broadphase {
 /// Pairs with at least one proxy in `moved` (e.g. the proxies moved this step) whose filters
 /// accept each other, each once, a.index < b.index. Errors: InvalidProxy (any handle in moved).
 template <class B>
-std::vector<ProxyPair> pairs_involving(const B& bp, std::span<const ProxyId> moved,
-                                      PairOrder order = PairOrder::Any) {
+std::vector<ProxyPair> pairs_involving(const B& bp, std::span<const ProxyId> moved, PairOrder order = PairOrder::Any) {
   for (const ProxyId id : moved) {
     if (!bp.contains(id))
       throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");

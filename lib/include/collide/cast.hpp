@@ -134,7 +134,8 @@ bool cast_input_valid(const Vec2<T>& va, const Vec2<T>& vb, T max_t) noexcept {
   }
   // Each shape's own travel too: the hit's point is reported in the world at time t.
   const Vec2c w = widen(va) - widen(vb);
-  const Calc travel = std::max({w.cwiseAbs().maxCoeff(), widen(va).cwiseAbs().maxCoeff(), widen(vb).cwiseAbs().maxCoeff()});
+  const Calc travel =
+      std::max({w.cwiseAbs().maxCoeff(), widen(va).cwiseAbs().maxCoeff(), widen(vb).cwiseAbs().maxCoeff()});
   return travel * m <= 2 * lim;
 }
 
@@ -144,9 +145,9 @@ bool cast_input_valid(const Vec2<T>& va, const Vec2<T>& vb, T max_t) noexcept {
 /// placed by xb (see the top of cast.hpp): at a hit's t the exact shapes are at most eps apart.
 /// Inputs as for shape_cast().
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc cast_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va, const B& b,
-                    const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc
+cast_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va, const B& b,
+               const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   const Vec2c w = widen(va) - widen(vb);
   const Calc speed = w.cwiseAbs().maxCoeff();
@@ -158,9 +159,9 @@ Calc cast_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<
 
 /// cast_tolerance() of shapes in world space (both transforms the identity).
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc cast_tolerance(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb,
-                    scalar_of_t<A> max_t) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc cast_tolerance(const A& a, const Vec2<scalar_of_t<A>>& va,
+                                                                            const B& b, const Vec2<scalar_of_t<A>>& vb,
+                                                                            scalar_of_t<A> max_t) {
   using X = Transform<scalar_of_t<A>>;
   return cast_tolerance(a, X(), va, b, X(), vb, max_t);
 }
@@ -170,10 +171,9 @@ Calc cast_tolerance(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, cons
 /// normal from a toward b and the point between the surfaces there, in world coordinates. Any
 /// shape types, either order, one scalar. See the contract at the top of cast.hpp.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-CastResult<scalar_of_t<A>> shape_cast(const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va,
-                                      const B& b, const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb,
-                                      scalar_of_t<A> max_t) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A>> shape_cast(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va, const B& b,
+    const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   if (!detail::cast_input_valid(va, vb, max_t)) return detail::invalid_cast<T>();
   // Starting in contact (the computed images overlap): answered by contact().
@@ -192,21 +192,19 @@ CastResult<scalar_of_t<A>> shape_cast(const A& a, const Transform<scalar_of_t<A>
   const auto step = [&](const detail::Core& p, const detail::Core& q, Calc until) {
     return detail::cast_cores(p, wa, q, wb, until, target, skin);
   };
-  const detail::CoreCast best =
-      xa.is_identity() && xb.is_identity()
-          ? detail::earliest_over_pairs(a, b, s_max, step)
-          : detail::with_placed_pair(a, xa, b, xb, [&](const auto& pa, const auto& pb) {
-              return detail::earliest_over_pairs(pa, pb, s_max, step);
-            });
+  const detail::CoreCast best = xa.is_identity() && xb.is_identity()
+                                    ? detail::earliest_over_pairs(a, b, s_max, step)
+                                    : detail::with_placed_pair(a, xa, b, xb, [&](const auto& pa, const auto& pb) {
+                                        return detail::earliest_over_pairs(pa, pb, s_max, step);
+                                      });
   return detail::to_result<T>(best, s_max);
 }
 
 /// The first time in [0, max_t] at which a moving at va meets b moving at vb, both in world
 /// space: shape_cast() with both transforms the identity. See the contract at the top of cast.hpp.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-CastResult<scalar_of_t<A>> shape_cast(const A& a, const Vec2<scalar_of_t<A>>& va, const B& b,
-                                      const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A>> shape_cast(
+    const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
   using X = Transform<scalar_of_t<A>>;
   return shape_cast(a, X(), va, b, X(), vb, max_t);
 }

@@ -1,7 +1,8 @@
 #pragma once
 /// @file collide.hpp
 /// Umbrella header: shapes, transforms, the registry and every query (overlaps, contact, resolve,
-/// distance, bounds, contains, raycast), world-space and transformed. The broadphase has its own header, collide/broadphase.hpp.
+/// distance, bounds, contains, raycast), world-space and transformed. The broadphase has its own header,
+/// collide/broadphase.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/config.hpp"

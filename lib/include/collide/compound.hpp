@@ -104,8 +104,8 @@ class Compound {
  public:
   /// One child and its placement in the compound's frame.
   struct Child {
-    Primitive<T> shape;       ///< the child in its own local frame
-    Transform<T> transform;   ///< where the child sits in the compound's frame (identity by default)
+    Primitive<T> shape;      ///< the child in its own local frame
+    Transform<T> transform;  ///< where the child sits in the compound's frame (identity by default)
   };
 
   /// Children placed where their values say (every child transform the identity).

@@ -48,7 +48,7 @@ bool contains_concrete(const ConvexPolygon<T>& s, const Vec2c& p) noexcept {
 /// A compound, stored or placed: its box first (conservative, so an exact early-out), then each
 /// child as placed.
 template <class S>
-  requires is_compound_v<S>
+requires is_compound_v<S>
 bool contains_concrete(const S& s, const Vec2c& p) {
   if (!contains_concrete(calc_bounds(s), p)) return false;
   bool in = false;

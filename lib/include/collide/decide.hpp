@@ -141,7 +141,7 @@ inline int filtered_point_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b
   const Calc mt = std::fabs(wx * ex) + std::fabs(wy * ey) + ee;
   if (!(mt > kFilterFloor)) return 2;
   const Calc tb = 8 * kUnitRoundoff * mt;
-  if (t < -tb) return filtered_sign_dist2(wx, wy, r);                          // nearest: a
+  if (t < -tb) return filtered_sign_dist2(wx, wy, r);                            // nearest: a
   if (t - ee > tb) return filtered_sign_dist2(p.x() - b.x(), p.y() - b.y(), r);  // nearest: b
   if (t > tb && ee - t > tb && (r == 0 || r * r > kUnderflowMargin)) {
     const Calc c = ex * wy - ey * wx;
@@ -161,7 +161,8 @@ inline int filtered_point_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b
 template <class P>
 bool point_segment_within(const P& p, const Vec2c& a, const Vec2c& b, const Radii& r) noexcept {
   if constexpr (std::is_same_v<P, Vec2c>) {
-    if (const int s = filtered_point_segment(p, a, b, r.a + r.b); s != 2) [[likely]] return s <= 0;
+    if (const int s = filtered_point_segment(p, a, b, r.a + r.b); s != 2) [[likely]]
+      return s <= 0;
   }
   if (sign_dist2_minus(p, a, r) <= 0) return true;
   if (a == b) return false;
@@ -203,7 +204,9 @@ bool obb_face_separates(const ObbValues& o, std::span<const P> pts) noexcept {
 }
 
 /// The turn a -> b -> p for an OBB corner (found by has_separating_edge through its argument).
-inline int turn_of(const Vec2c& a, const Vec2c& b, const ObbCorner& p) noexcept { return sign_turn(a, b, p); }
+inline int turn_of(const Vec2c& a, const Vec2c& b, const ObbCorner& p) noexcept {
+  return sign_turn(a, b, p);
+}
 
 /// Some edge of a core (a segment counts both ways) has every corner of the OBB strictly outside.
 inline bool core_edge_separates_obb(const Core& k, const ObbValues& o) noexcept {
@@ -249,7 +252,8 @@ inline int filtered_obb_obb(const ObbValues& a, const ObbValues& b) noexcept {
 }
 
 inline bool obb_meets_obb(const ObbValues& a, const ObbValues& b) noexcept {
-  if (const int s = filtered_obb_obb(a, b); s != 2) [[likely]] return s > 0;
+  if (const int s = filtered_obb_obb(a, b); s != 2) [[likely]]
+    return s > 0;
   const std::array<ObbCorner, 4> ca = a.corners(), cb = b.corners();
   return !obb_face_separates(a, std::span<const ObbCorner>(cb)) &&
          !obb_face_separates(b, std::span<const ObbCorner>(ca));
@@ -333,8 +337,7 @@ inline bool dilated_cores_meet(const Core& p, const Core& q, const Radii& r) noe
   if (!(r.a > 0) && !(r.b > 0)) return false;
   auto vertices_near_edges = [&r](const Core& v, const Core& e) {
     for (const Vec2c& x : v.pts()) {
-      if (any_edge(e, [&](const Vec2c& a, const Vec2c& b) { return point_segment_within(x, a, b, r); }))
-        return true;
+      if (any_edge(e, [&](const Vec2c& a, const Vec2c& b) { return point_segment_within(x, a, b, r); })) return true;
     }
     return false;
   };
@@ -344,7 +347,6 @@ inline bool dilated_cores_meet(const Core& p, const Core& q, const Radii& r) noe
   if (q.size() == 1) return vertices_near_edges(q, p);
   return vertices_near_edges(p, q) || vertices_near_edges(q, p);
 }
-
 
 }  // namespace detail
 
@@ -359,7 +361,8 @@ bool circle_circle(const Circle<T>& a, const Circle<T>& b) {
   const Vec2c ca = widen(a.center()), cb = widen(b.center());
   const Calc ra = a.radius(), rb = b.radius();
   const int s = detail::filtered_sign_dist2(cb.x() - ca.x(), cb.y() - ca.y(), ra + rb);
-  if (s != 2) [[likely]] return s <= 0;
+  if (s != 2) [[likely]]
+    return s <= 0;
   return detail::sign_dist2_minus(ca, cb, Radii{ra, rb}) <= 0;
 }
 
@@ -370,7 +373,8 @@ bool circle_aabb(const Circle<T>& a, const Aabb<T>& b) {
   const Vec2c nearest = c.cwiseMax(widen(b.min())).cwiseMin(widen(b.max()));  // stored values
   const Calc r = a.radius();
   const int s = detail::filtered_sign_dist2(c.x() - nearest.x(), c.y() - nearest.y(), r);
-  if (s != 2) [[likely]] return s <= 0;
+  if (s != 2) [[likely]]
+    return s <= 0;
   return detail::sign_dist2_minus(c, nearest, Radii{r, 0}) <= 0;
 }
 
@@ -469,22 +473,67 @@ bool polygon_polygon(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) {
 }
 
 /// The decision for a pair of primitives in registry order, by overload.
-template <Scalar T> bool pair(const Circle<T>& a, const Circle<T>& b) { return circle_circle(a, b); }
+template <Scalar T>
+bool pair(const Circle<T>& a, const Circle<T>& b) {
+  return circle_circle(a, b);
+}
 /// @cond COLLIDE_SPECIALISATIONS
-template <Scalar T> bool pair(const Circle<T>& a, const Aabb<T>& b) { return circle_aabb(a, b); }
-template <Scalar T> bool pair(const Circle<T>& a, const Obb<T>& b) { return circle_obb(a, b); }
-template <Scalar T> bool pair(const Circle<T>& a, const Capsule<T>& b) { return circle_capsule(a, b); }
-template <Scalar T> bool pair(const Circle<T>& a, const ConvexPolygon<T>& b) { return circle_polygon(a, b); }
-template <Scalar T> bool pair(const Aabb<T>& a, const Aabb<T>& b) { return aabb_aabb(a, b); }
-template <Scalar T> bool pair(const Aabb<T>& a, const Obb<T>& b) { return aabb_obb(a, b); }
-template <Scalar T> bool pair(const Aabb<T>& a, const Capsule<T>& b) { return aabb_capsule(a, b); }
-template <Scalar T> bool pair(const Aabb<T>& a, const ConvexPolygon<T>& b) { return aabb_polygon(a, b); }
-template <Scalar T> bool pair(const Obb<T>& a, const Obb<T>& b) { return obb_obb(a, b); }
-template <Scalar T> bool pair(const Obb<T>& a, const Capsule<T>& b) { return obb_capsule(a, b); }
-template <Scalar T> bool pair(const Obb<T>& a, const ConvexPolygon<T>& b) { return obb_polygon(a, b); }
-template <Scalar T> bool pair(const Capsule<T>& a, const Capsule<T>& b) { return capsule_capsule(a, b); }
-template <Scalar T> bool pair(const Capsule<T>& a, const ConvexPolygon<T>& b) { return capsule_polygon(a, b); }
-template <Scalar T> bool pair(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) { return polygon_polygon(a, b); }
+template <Scalar T>
+bool pair(const Circle<T>& a, const Aabb<T>& b) {
+  return circle_aabb(a, b);
+}
+template <Scalar T>
+bool pair(const Circle<T>& a, const Obb<T>& b) {
+  return circle_obb(a, b);
+}
+template <Scalar T>
+bool pair(const Circle<T>& a, const Capsule<T>& b) {
+  return circle_capsule(a, b);
+}
+template <Scalar T>
+bool pair(const Circle<T>& a, const ConvexPolygon<T>& b) {
+  return circle_polygon(a, b);
+}
+template <Scalar T>
+bool pair(const Aabb<T>& a, const Aabb<T>& b) {
+  return aabb_aabb(a, b);
+}
+template <Scalar T>
+bool pair(const Aabb<T>& a, const Obb<T>& b) {
+  return aabb_obb(a, b);
+}
+template <Scalar T>
+bool pair(const Aabb<T>& a, const Capsule<T>& b) {
+  return aabb_capsule(a, b);
+}
+template <Scalar T>
+bool pair(const Aabb<T>& a, const ConvexPolygon<T>& b) {
+  return aabb_polygon(a, b);
+}
+template <Scalar T>
+bool pair(const Obb<T>& a, const Obb<T>& b) {
+  return obb_obb(a, b);
+}
+template <Scalar T>
+bool pair(const Obb<T>& a, const Capsule<T>& b) {
+  return obb_capsule(a, b);
+}
+template <Scalar T>
+bool pair(const Obb<T>& a, const ConvexPolygon<T>& b) {
+  return obb_polygon(a, b);
+}
+template <Scalar T>
+bool pair(const Capsule<T>& a, const Capsule<T>& b) {
+  return capsule_capsule(a, b);
+}
+template <Scalar T>
+bool pair(const Capsule<T>& a, const ConvexPolygon<T>& b) {
+  return capsule_polygon(a, b);
+}
+template <Scalar T>
+bool pair(const ConvexPolygon<T>& a, const ConvexPolygon<T>& b) {
+  return polygon_polygon(a, b);
+}
 /// @endcond
 
 }  // namespace decide

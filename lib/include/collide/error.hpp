@@ -33,18 +33,30 @@ enum class Error : std::uint8_t {
 /// Stable name of an error, e.g. "NonConvex".
 constexpr std::string_view name(Error e) noexcept {
   switch (e) {
-    case Error::NonFinite: return "NonFinite";
-    case Error::OutOfRange: return "OutOfRange";
-    case Error::NegativeRadius: return "NegativeRadius";
-    case Error::NegativeExtent: return "NegativeExtent";
-    case Error::MinGreaterThanMax: return "MinGreaterThanMax";
-    case Error::ZeroAxis: return "ZeroAxis";
-    case Error::TooFewVertices: return "TooFewVertices";
-    case Error::Collinear: return "Collinear";
-    case Error::NonConvex: return "NonConvex";
-    case Error::NotARectangle: return "NotARectangle";
-    case Error::EmptyCompound: return "EmptyCompound";
-    case Error::ZeroRotation: return "ZeroRotation";
+    case Error::NonFinite:
+      return "NonFinite";
+    case Error::OutOfRange:
+      return "OutOfRange";
+    case Error::NegativeRadius:
+      return "NegativeRadius";
+    case Error::NegativeExtent:
+      return "NegativeExtent";
+    case Error::MinGreaterThanMax:
+      return "MinGreaterThanMax";
+    case Error::ZeroAxis:
+      return "ZeroAxis";
+    case Error::TooFewVertices:
+      return "TooFewVertices";
+    case Error::Collinear:
+      return "Collinear";
+    case Error::NonConvex:
+      return "NonConvex";
+    case Error::NotARectangle:
+      return "NotARectangle";
+    case Error::EmptyCompound:
+      return "EmptyCompound";
+    case Error::ZeroRotation:
+      return "ZeroRotation";
   }
   return "Unknown";
 }
@@ -94,9 +106,9 @@ template <class V>
 class Expected {
  public:
   /// Holds a value.
-  Expected(V v) : data_(std::move(v)) {}                    // NOLINT(google-explicit-constructor)
+  Expected(V v) : data_(std::move(v)) {}  // NOLINT(google-explicit-constructor)
   /// Holds the error that rejected the value.
-  Expected(ShapeError e) : data_(std::move(e)) {}           // NOLINT(google-explicit-constructor)
+  Expected(ShapeError e) : data_(std::move(e)) {}  // NOLINT(google-explicit-constructor)
   /// True when a value is held.
   bool has_value() const noexcept { return data_.index() == 0; }
   /// Same as has_value().

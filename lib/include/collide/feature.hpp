@@ -38,10 +38,10 @@ enum class FeatureKind : std::uint8_t {
 /// Which features of the two shapes produced one contact point (see the numbering above). Equal
 /// ids in two frames mean the same pair of features.
 struct FeatureId {
-  std::uint16_t child_a = 0;                ///< index of a's child (0 for a primitive)
-  std::uint16_t child_b = 0;                ///< index of b's child (0 for a primitive)
-  std::uint8_t index_a = 0;                 ///< vertex or edge index on a (or its child)
-  std::uint8_t index_b = 0;                 ///< vertex or edge index on b (or its child)
+  std::uint16_t child_a = 0;                 ///< index of a's child (0 for a primitive)
+  std::uint16_t child_b = 0;                 ///< index of b's child (0 for a primitive)
+  std::uint8_t index_a = 0;                  ///< vertex or edge index on a (or its child)
+  std::uint8_t index_b = 0;                  ///< vertex or edge index on b (or its child)
   FeatureKind kind_a = FeatureKind::Vertex;  ///< whether index_a names a vertex or an edge
   FeatureKind kind_b = FeatureKind::Vertex;  ///< whether index_b names a vertex or an edge
   /// Field by field.

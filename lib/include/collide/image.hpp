@@ -97,7 +97,8 @@ decltype(auto) with_image(const Capsule<T>& s, const Pose& x, F&& f) {
 /// Centre mapped, half extents kept, axis turned by R(q).
 template <Scalar T, class F>
 decltype(auto) with_image(const Obb<T>& s, const Pose& x, F&& f) {
-  return f(ShapeAccess::obb<Calc>(image_point(x, widen(s.center())), widen(s.half_extents()), x.rotate(widen(s.axis()))));
+  return f(
+      ShapeAccess::obb<Calc>(image_point(x, widen(s.center())), widen(s.half_extents()), x.rotate(widen(s.axis()))));
 }
 /// Under a translation (q = (1, 0)) an AABB's image is an AABB (the mapped corners); under any
 /// other rotation, quarter turns included, an OBB with axis q, whose corners keep the AABB's
@@ -125,7 +126,8 @@ decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const std::size_t n = s.size();
-  const ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
+  const ConvexPolygon<Calc> img =
+      ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
   bool strict = true;
   for (std::size_t k = 0; k < n && strict; ++k) strict = orient(img[k], img[(k + 1) % n], img[(k + 2) % n]) > 0;
   if (strict) return f(img);

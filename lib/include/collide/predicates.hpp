@@ -88,10 +88,13 @@ inline Bounded operator-(const Bounded& a, const Bounded& b) noexcept {
   const double s = a.v - b.v;
   return {s, a.err + b.err + std::fabs(s) * kUnitRoundoff};
 }
-inline Bounded operator-(const Bounded& a) noexcept { return {-a.v, a.err}; }
+inline Bounded operator-(const Bounded& a) noexcept {
+  return {-a.v, a.err};
+}
 inline Bounded operator*(const Bounded& a, const Bounded& b) noexcept {
   const double p = a.v * b.v;
-  return {p, std::fabs(a.v) * b.err + std::fabs(b.v) * a.err + a.err * b.err + std::fabs(p) * kUnitRoundoff + kProductUnderflow};
+  return {p, std::fabs(a.v) * b.err + std::fabs(b.v) * a.err + a.err * b.err + std::fabs(p) * kUnitRoundoff +
+                 kProductUnderflow};
 }
 
 /// An exact binary number sign * mag * 2^exp of up to kLimbs 32-bit limbs: enough for every
@@ -237,7 +240,8 @@ inline thread_local std::uint64_t exact_evaluations = 0;
 template <class F>
 int exact_sign(F&& f) noexcept {
   const int s = f(Bounded{}).certain_sign();
-  if (s != 2) [[likely]] return s;
+  if (s != 2) [[likely]]
+    return s;
   ++exact_evaluations;
   return f(Exact{}).sign();
 }
@@ -282,8 +286,8 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
-  const double m = std::max({std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()),
-                             std::fabs(c.x()), std::fabs(c.y())});
+  const double m = std::max(
+      {std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()), std::fabs(c.x()), std::fabs(c.y())});
   if (m == 0.0) return 0;
   ++detail::exact_evaluations;
   // The expansion needs every non-zero coordinate within kExpansionSpread of the largest.
@@ -304,12 +308,15 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
   return detail::orient_expansion(s(a), s(b), s(c));
 }
 
-
 /// 2D cross product (z component), computed in Calc.
-inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept { return a.x() * b.y() - a.y() * b.x(); }
+inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 /// Left perpendicular (rotated +90 degrees).
-inline Vec2c perp(const Vec2c& v) noexcept { return {-v.y(), v.x()}; }
+inline Vec2c perp(const Vec2c& v) noexcept {
+  return {-v.y(), v.x()};
+}
 
 /// Exact widening of a stored vector into the computation type.
 template <Scalar T>

@@ -97,7 +97,7 @@ bool overlaps_concrete(const A& a, const B& b) {
 /// True when the closed shapes share at least one point (touching counts).
 /// Error: exact for every pair (see the contract at the top of this file).
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 bool overlaps(const A& a, const B& b) {
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) { return detail::overlaps_concrete(ca, cb); });
@@ -148,9 +148,9 @@ Calc overlap_tolerance(const A& a, const B& b) noexcept {
 /// point - normal * separation / 2 and b's is point + normal * separation / 2.
 template <Scalar T>
 struct Contact {
-  Vec2<T> normal;  ///< unit vector pointing from a toward b (a moves along -normal to separate)
-  T depth;         ///< penetration depth along normal, >= 0 (0 when only touching or apart)
-  int count;       ///< number of valid entries in points, ids and separations: 1 or 2
+  Vec2<T> normal;                 ///< unit vector pointing from a toward b (a moves along -normal to separate)
+  T depth;                        ///< penetration depth along normal, >= 0 (0 when only touching or apart)
+  int count;                      ///< number of valid entries in points, ids and separations: 1 or 2
   std::array<Vec2<T>, 2> points;  ///< contact points, midway between the two surfaces
   std::array<FeatureId, 2> ids;   ///< per point, the features of a and b that produced it (feature.hpp)
   std::array<T, 2> separations;   ///< per point, signed surface distance along normal (< 0 penetrating)
@@ -257,8 +257,8 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0
 /// an infinite one reports every pair. For compounds, an overlapping child pair wins over the
 /// nearest pair apart.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b, scalar_of_t<A> speculative) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<scalar_of_t<A>>> contact(
+    const A& a, const B& b, scalar_of_t<A> speculative) {
   return detail::contact_as<scalar_of_t<A>>(a, b, speculative);
 }
 
@@ -269,8 +269,8 @@ std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b, scalar_of
 /// rounding_tolerance(a, b) of the exact values (depth of the exact depth; each separation of the
 /// exact signed distance of the surfaces along the normal at its point).
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<scalar_of_t<A>>> contact(const A& a,
+                                                                                                       const B& b) {
   return contact(a, b, scalar_of_t<A>(0));
 }
 
@@ -280,7 +280,9 @@ std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const B& b) {
 namespace detail {
 
 /// h(n) = max over the dilated core of x . n, for unit n.
-inline Calc dilated_support(const Core& c, const Vec2c& n) { return support(c, n) + c.radius; }
+inline Calc dilated_support(const Core& c, const Vec2c& n) {
+  return support(c, n) + c.radius;
+}
 
 /// v rounded to T with each component's magnitude rounded down, so |result| <= |v|: the push
 /// never exceeds depth + margin because of the final rounding.
@@ -339,8 +341,9 @@ std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, co
         std::visit([&](const auto& c) { any = overlaps_concrete(translated(c, v).value(), b); }, kids[i]);
       } else {
         const Pose x = a.child_transform(i).moved(v)->pose();
-        std::visit([&](const auto& c) { any = with_image(c, x, [&](const auto& img) { return overlaps_concrete(img, b); }); },
-                   kids[i]);
+        std::visit(
+            [&](const auto& c) { any = with_image(c, x, [&](const auto& img) { return overlaps_concrete(img, b); }); },
+            kids[i]);
       }
     }
     return any;
@@ -360,8 +363,9 @@ namespace detail {
 /// stored values (what is rounded to T when it moves).
 template <Scalar T>
 Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
-  return 4 * kOverlapErrorFactor * kUnitRoundoff * s_pair + 8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) +
-         16 * kSmallestDouble + 2 * Calc(std::numeric_limits<T>::denorm_min());
+  return 4 * kOverlapErrorFactor * kUnitRoundoff * s_pair +
+         8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) + 16 * kSmallestDouble +
+         2 * Calc(std::numeric_limits<T>::denorm_min());
 }
 
 }  // namespace detail
@@ -385,7 +389,6 @@ Calc resolve_margin(const A& a, const B& b, Calc depth) {
 }
 
 namespace detail {
-
 
 /// resolve() on concrete shapes, stored or placed: the push in T. s_moved is the largest stored
 /// magnitude of a that a move rounds; extra is added to the margin (the placements' bound);
@@ -426,10 +429,10 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
 }  // namespace detail
 
 /// Minimum translation of a that separates it from b (the shortest push,
-/// as the course notes resolve penetration, generalised to every pair): zero if they do not overlap; otherwise -normal * (depth + margin), so a moved by
-/// it no longer overlaps b, strictly (margin: resolve_margin(); when a polygon or a compound is
-/// involved, doubled up to 8 times if the moved shape still tests as overlapping after rounding
-/// to T — the other pairs need no test, the margin covering their rounding).
+/// as the course notes resolve penetration, generalised to every pair): zero if they do not overlap; otherwise -normal
+/// * (depth + margin), so a moved by it no longer overlaps b, strictly (margin: resolve_margin(); when a polygon or a
+/// compound is involved, doubled up to 8 times if the moved shape still tests as overlapping after rounding to T — the
+/// other pairs need no test, the margin covering their rounding).
 ///
 /// Minimal for the 15 pairs of primitives (depth is the least penetration over the Minkowski
 /// difference's faces). For compounds the push is the smallest among the child contacts'
@@ -440,8 +443,7 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
 /// returns that named error (OutOfRange, Collinear, TooFewVertices); v still separates the exact,
 /// unrounded a + v.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
   using T = scalar_of_t<A>;
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) -> Vec2<T> {
@@ -476,8 +478,7 @@ T distance_as(const A& ca, const B& cb) {
 /// at least the smallest positive T (a separated pair whose gap rounds to 0 is not reported as
 /// touching). Error: a rounded result, within a few rounding_tolerance(a, b) of the exact gap.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-scalar_of_t<A> distance(const A& a, const B& b) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> scalar_of_t<A> distance(const A& a, const B& b) {
   using T = scalar_of_t<A>;
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) { return detail::distance_as<T>(ca, cb); });

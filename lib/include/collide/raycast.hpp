@@ -174,10 +174,22 @@ inline std::optional<UnitRayHit> ray_core(const Core& c, const UnitRay& ray) {
       const Vec2c ap = c[0] + n * c.radius, am = c[0] - n * c.radius;
       const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
         switch (i) {
-          case 0: nn = n; p = ap; break;
-          case 1: nn = -n; p = am; break;
-          case 2: nn = t; p = c[1]; break;
-          default: nn = -t; p = c[0]; break;
+          case 0:
+            nn = n;
+            p = ap;
+            break;
+          case 1:
+            nn = -n;
+            p = am;
+            break;
+          case 2:
+            nn = t;
+            p = c[1];
+            break;
+          default:
+            nn = -t;
+            p = c[0];
+            break;
         }
       };
       const std::optional<UnitRayHit> hr = ray_half_planes(4, plane, ray);
@@ -301,8 +313,7 @@ std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) 
 /// Compounds: bounding-box early-out, then the nearest child hit.
 /// Error: see raycast_tolerance() and the contract at the top of raycast.hpp.
 template <AnyShape S>
-std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray,
-                                              scalar_of_t<S> max_t) {
+std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray, scalar_of_t<S> max_t) {
   return detail::raycast_as<scalar_of_t<S>>(shape, ray, max_t);
 }
 

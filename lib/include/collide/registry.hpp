@@ -29,9 +29,8 @@ enum class ShapeKind : std::uint8_t { Circle, Aabb, Obb, Capsule, Polygon, Compo
 /// Number of shape kinds.
 inline constexpr std::size_t kKindCount = 6;
 /// Every kind, in ShapeKind order.
-inline constexpr std::array<ShapeKind, kKindCount> kKinds = {ShapeKind::Circle, ShapeKind::Aabb,
-                                                             ShapeKind::Obb,    ShapeKind::Capsule,
-                                                             ShapeKind::Polygon, ShapeKind::Compound};
+inline constexpr std::array<ShapeKind, kKindCount> kKinds = {
+    ShapeKind::Circle, ShapeKind::Aabb, ShapeKind::Obb, ShapeKind::Capsule, ShapeKind::Polygon, ShapeKind::Compound};
 
 /// Lower-case name used in reports, case files and command lines: circle, aabb, obb, capsule,
 /// polygon, compound.
@@ -92,12 +91,30 @@ constexpr KindPair make_pair(ShapeKind a, ShapeKind b) noexcept {
 template <ShapeKind K, Scalar T>
 struct KindTraits;
 /// @cond COLLIDE_SPECIALISATIONS
-template <Scalar T> struct KindTraits<ShapeKind::Circle, T> { using type = Circle<T>; };
-template <Scalar T> struct KindTraits<ShapeKind::Aabb, T> { using type = Aabb<T>; };
-template <Scalar T> struct KindTraits<ShapeKind::Obb, T> { using type = Obb<T>; };
-template <Scalar T> struct KindTraits<ShapeKind::Capsule, T> { using type = Capsule<T>; };
-template <Scalar T> struct KindTraits<ShapeKind::Polygon, T> { using type = ConvexPolygon<T>; };
-template <Scalar T> struct KindTraits<ShapeKind::Compound, T> { using type = Compound<T>; };
+template <Scalar T>
+struct KindTraits<ShapeKind::Circle, T> {
+  using type = Circle<T>;
+};
+template <Scalar T>
+struct KindTraits<ShapeKind::Aabb, T> {
+  using type = Aabb<T>;
+};
+template <Scalar T>
+struct KindTraits<ShapeKind::Obb, T> {
+  using type = Obb<T>;
+};
+template <Scalar T>
+struct KindTraits<ShapeKind::Capsule, T> {
+  using type = Capsule<T>;
+};
+template <Scalar T>
+struct KindTraits<ShapeKind::Polygon, T> {
+  using type = ConvexPolygon<T>;
+};
+template <Scalar T>
+struct KindTraits<ShapeKind::Compound, T> {
+  using type = Compound<T>;
+};
 /// @endcond
 
 /// The shape type of kind K with scalar T, e.g. ShapeOf<ShapeKind::Circle, float> = Circle<float>.
@@ -112,12 +129,30 @@ using Shape = std::variant<Circle<T>, Aabb<T>, Obb<T>, Capsule<T>, ConvexPolygon
 template <class S>
 struct KindOf;
 /// @cond COLLIDE_SPECIALISATIONS
-template <Scalar T> struct KindOf<Circle<T>> { static constexpr ShapeKind value = ShapeKind::Circle; };
-template <Scalar T> struct KindOf<Aabb<T>> { static constexpr ShapeKind value = ShapeKind::Aabb; };
-template <Scalar T> struct KindOf<Obb<T>> { static constexpr ShapeKind value = ShapeKind::Obb; };
-template <Scalar T> struct KindOf<Capsule<T>> { static constexpr ShapeKind value = ShapeKind::Capsule; };
-template <Scalar T> struct KindOf<ConvexPolygon<T>> { static constexpr ShapeKind value = ShapeKind::Polygon; };
-template <Scalar T> struct KindOf<Compound<T>> { static constexpr ShapeKind value = ShapeKind::Compound; };
+template <Scalar T>
+struct KindOf<Circle<T>> {
+  static constexpr ShapeKind value = ShapeKind::Circle;
+};
+template <Scalar T>
+struct KindOf<Aabb<T>> {
+  static constexpr ShapeKind value = ShapeKind::Aabb;
+};
+template <Scalar T>
+struct KindOf<Obb<T>> {
+  static constexpr ShapeKind value = ShapeKind::Obb;
+};
+template <Scalar T>
+struct KindOf<Capsule<T>> {
+  static constexpr ShapeKind value = ShapeKind::Capsule;
+};
+template <Scalar T>
+struct KindOf<ConvexPolygon<T>> {
+  static constexpr ShapeKind value = ShapeKind::Polygon;
+};
+template <Scalar T>
+struct KindOf<Compound<T>> {
+  static constexpr ShapeKind value = ShapeKind::Compound;
+};
 /// @endcond
 
 /// The kind of shape type S.
@@ -145,7 +180,8 @@ consteval bool alternatives_follow_kinds() {
     return ((static_cast<std::size_t>(kKinds[I]) == I) && ...) &&
            (std::is_same_v<std::variant_alternative_t<I, V>, ShapeOf<kKinds[I], T>> && ...) &&
            ((kind_of_v<std::variant_alternative_t<I, V>> == kKinds[I]) && ...);
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 }  // namespace detail
 /// @endcond
@@ -169,7 +205,8 @@ template <class F>
 constexpr void for_each_kind(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     (f.template operator()<kKinds[I]>(), ...);
-  }(std::make_index_sequence<kKindCount>{});
+  }
+  (std::make_index_sequence<kKindCount>{});
 }
 
 /// Calls `f.template operator()<A, B>()` for every unordered pair (A <= B), in kPairs order.
@@ -177,19 +214,26 @@ template <class F>
 constexpr void for_each_pair(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) {
     (f.template operator()<kPairs[I].first, kPairs[I].second>(), ...);
-  }(std::make_index_sequence<kPairCount>{});
+  }
+  (std::make_index_sequence<kPairCount>{});
 }
 
 /// Calls `f.template operator()<K>()` for the kind known only at run time; returns its result.
 template <class F>
 constexpr decltype(auto) visit_kind(ShapeKind k, F&& f) {
   switch (k) {
-    case ShapeKind::Circle: return f.template operator()<ShapeKind::Circle>();
-    case ShapeKind::Aabb: return f.template operator()<ShapeKind::Aabb>();
-    case ShapeKind::Obb: return f.template operator()<ShapeKind::Obb>();
-    case ShapeKind::Capsule: return f.template operator()<ShapeKind::Capsule>();
-    case ShapeKind::Polygon: return f.template operator()<ShapeKind::Polygon>();
-    case ShapeKind::Compound: break;
+    case ShapeKind::Circle:
+      return f.template operator()<ShapeKind::Circle>();
+    case ShapeKind::Aabb:
+      return f.template operator()<ShapeKind::Aabb>();
+    case ShapeKind::Obb:
+      return f.template operator()<ShapeKind::Obb>();
+    case ShapeKind::Capsule:
+      return f.template operator()<ShapeKind::Capsule>();
+    case ShapeKind::Polygon:
+      return f.template operator()<ShapeKind::Polygon>();
+    case ShapeKind::Compound:
+      break;
   }
   return f.template operator()<ShapeKind::Compound>();
 }
@@ -215,8 +259,7 @@ inline Aabb<double> widened(const Aabb<float>& s) {
 }
 /// The same shape with double storage (exact: the same point set).
 inline Obb<double> widened(const Obb<float>& s) {
-  return detail::ObbAccess::with_axis_of<double>(s.center().cast<double>(), s.half_extents().cast<double>(), s)
-      .value();
+  return detail::ObbAccess::with_axis_of<double>(s.center().cast<double>(), s.half_extents().cast<double>(), s).value();
 }
 /// The same shape with double storage (exact: the same point set).
 inline Capsule<double> widened(const Capsule<float>& s) {
@@ -242,7 +285,7 @@ inline Shape<double> widened(const Shape<float>& s) {
 }
 /// Identity for double shapes, so generic code can widen any shape.
 template <class S>
-  requires std::is_same_v<S, Shape<double>>
+requires std::is_same_v<S, Shape<double>>
 const S& widened(const S& s) {
   return s;
 }

@@ -17,12 +17,30 @@ namespace collide {
 template <class S>
 struct ScalarOf;
 /// @cond COLLIDE_SPECIALISATIONS
-template <Scalar T> struct ScalarOf<Circle<T>> { using type = T; };
-template <Scalar T> struct ScalarOf<Aabb<T>> { using type = T; };
-template <Scalar T> struct ScalarOf<Obb<T>> { using type = T; };
-template <Scalar T> struct ScalarOf<Capsule<T>> { using type = T; };
-template <Scalar T> struct ScalarOf<ConvexPolygon<T>> { using type = T; };
-template <Scalar T> struct ScalarOf<Compound<T>> { using type = T; };
+template <Scalar T>
+struct ScalarOf<Circle<T>> {
+  using type = T;
+};
+template <Scalar T>
+struct ScalarOf<Aabb<T>> {
+  using type = T;
+};
+template <Scalar T>
+struct ScalarOf<Obb<T>> {
+  using type = T;
+};
+template <Scalar T>
+struct ScalarOf<Capsule<T>> {
+  using type = T;
+};
+template <Scalar T>
+struct ScalarOf<ConvexPolygon<T>> {
+  using type = T;
+};
+template <Scalar T>
+struct ScalarOf<Compound<T>> {
+  using type = T;
+};
 template <Scalar T, class... Rest>
 struct ScalarOf<std::variant<Circle<T>, Rest...>> {
   using type = T;
@@ -34,18 +52,22 @@ template <class S>
 using scalar_of_t = typename ScalarOf<std::remove_cvref_t<S>>::type;
 
 template <class S>
-concept PrimitiveShape = requires { typename ScalarOf<S>::type; } &&
-    (std::is_same_v<S, Circle<scalar_of_t<S>>> || std::is_same_v<S, Aabb<scalar_of_t<S>>> ||
-     std::is_same_v<S, Obb<scalar_of_t<S>>> || std::is_same_v<S, Capsule<scalar_of_t<S>>> ||
-     std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>);
+concept PrimitiveShape = requires {
+  typename ScalarOf<S>::type;
+}
+&&(std::is_same_v<S, Circle<scalar_of_t<S>>> || std::is_same_v<S, Aabb<scalar_of_t<S>>> ||
+   std::is_same_v<S, Obb<scalar_of_t<S>>> || std::is_same_v<S, Capsule<scalar_of_t<S>>> ||
+   std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>);
 
 template <class S>
-concept ConcreteShape = PrimitiveShape<S> || (requires { typename ScalarOf<S>::type; } &&
-                                              std::is_same_v<S, Compound<scalar_of_t<S>>>);
+concept ConcreteShape = PrimitiveShape<S> ||
+    (requires { typename ScalarOf<S>::type; } && std::is_same_v<S, Compound<scalar_of_t<S>>>);
 
 template <class S>
-concept VariantShape = requires { typename ScalarOf<S>::type; } &&
-    (std::is_same_v<S, Shape<scalar_of_t<S>>> || std::is_same_v<S, Primitive<scalar_of_t<S>>>);
+concept VariantShape = requires {
+  typename ScalarOf<S>::type;
+}
+&&(std::is_same_v<S, Shape<scalar_of_t<S>>> || std::is_same_v<S, Primitive<scalar_of_t<S>>>);
 
 /// Any of the six shapes, Primitive<T> or Shape<T>.
 template <class S>
@@ -107,8 +129,7 @@ void for_each_primitive(const PlacedCompound<T>& s, F&& f) {
 
 /// Conservative bounding box of any shape (see compound.hpp for the per-shape overloads).
 template <class S>
-  requires VariantShape<S>
-Aabb<scalar_of_t<S>> bounds(const S& s) {
+requires VariantShape<S> Aabb<scalar_of_t<S>> bounds(const S& s) {
   return std::visit([](const auto& x) { return bounds(x); }, s);
 }
 

@@ -78,7 +78,8 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
 inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {
   const Vec2c d = b - a;
   const Calc dd = d.squaredNorm();
-  if (dd > kUnderflowMargin && dd < kOverflowMargin) [[likely]] return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
+  if (dd > kUnderflowMargin && dd < kOverflowMargin) [[likely]]
+    return Vec2c(d.y(), -d.x()) / std::sqrt(dd);
   return normalized(Vec2c(d.y(), -d.x())).value_or(Vec2c::Zero());
 }
 
@@ -88,7 +89,9 @@ struct PolygonAccess;
 struct AabbAccess;
 struct ShapeAccess;
 
-inline ShapeError placeholder_error() { return ShapeError(Error::NonFinite, -1, ""); }
+inline ShapeError placeholder_error() {
+  return ShapeError(Error::NonFinite, -1, "");
+}
 
 /// A list that keeps up to N elements inline and moves to the heap only beyond that, so that
 /// factories of shapes with a few vertices do not allocate.
@@ -110,8 +113,10 @@ class SmallList {
   void push_back(const V& v) {
     if (heap_.empty() && size_ == N) heap_.assign(inline_.begin(), inline_.end());
     if (!heap_.empty()) {
-      if (heap_.size() == size_) heap_.push_back(v);
-      else heap_[size_] = v;
+      if (heap_.size() == size_)
+        heap_.push_back(v);
+      else
+        heap_[size_] = v;
     } else {
       inline_[size_] = v;
     }
@@ -202,8 +207,7 @@ class Obb {
   /// Errors: NonFinite, OutOfRange (index 0..4 = center.x, center.y, hx, hy, angle), NegativeExtent.
   static Expected<Obb> make(const Vec2<T>& center, const Vec2<T>& half_extents, T angle) noexcept {
     ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>({center.x(), center.y(), half_extents.x(), half_extents.y(), angle}, &e))
-      return e;
+    if (!detail::check_values<T>({center.x(), center.y(), half_extents.x(), half_extents.y(), angle}, &e)) return e;
     const Vec2<T> axis(static_cast<T>(std::cos(static_cast<Calc>(angle))),
                        static_cast<T>(std::sin(static_cast<Calc>(angle))));
     return make_with_axis(center, half_extents, axis);
@@ -215,8 +219,7 @@ class Obb {
   static Expected<Obb> make_with_axis(const Vec2<T>& center, const Vec2<T>& half_extents,
                                       const Vec2<T>& axis) noexcept {
     ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>(
-            {center.x(), center.y(), half_extents.x(), half_extents.y(), axis.x(), axis.y()}, &e))
+    if (!detail::check_values<T>({center.x(), center.y(), half_extents.x(), half_extents.y(), axis.x(), axis.y()}, &e))
       return e;
     if (half_extents.x() < T(0) || half_extents.y() < T(0))
       return ShapeError(Error::NegativeExtent, half_extents.x() < T(0) ? 0 : 1, "OBB half extent is negative");
@@ -234,11 +237,10 @@ class Obb {
   static Expected<Obb> from_corners(const Vec2<T>& p0, const Vec2<T>& p1, const Vec2<T>& p2,
                                     const Vec2<T>& p3) noexcept {
     ShapeError e = detail::placeholder_error();
-    if (!detail::check_values<T>({p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y(), p3.x(), p3.y()}, &e))
-      return e;
+    if (!detail::check_values<T>({p0.x(), p0.y(), p1.x(), p1.y(), p2.x(), p2.y(), p3.x(), p3.y()}, &e)) return e;
     const Vec2c q0 = widen(p0), q1 = widen(p1), q2 = widen(p2), q3 = widen(p3);
-    const Calc scale = std::max({q0.cwiseAbs().maxCoeff(), q1.cwiseAbs().maxCoeff(),
-                                 q2.cwiseAbs().maxCoeff(), q3.cwiseAbs().maxCoeff()});
+    const Calc scale = std::max(
+        {q0.cwiseAbs().maxCoeff(), q1.cwiseAbs().maxCoeff(), q2.cwiseAbs().maxCoeff(), q3.cwiseAbs().maxCoeff()});
     const Calc tol = 16 * Calc(std::numeric_limits<T>::epsilon()) * scale;
     const Vec2c e1 = q1 - q0, e2 = q3 - q0;
     if ((q0 + q2 - q1 - q3).cwiseAbs().maxCoeff() > 2 * tol)
@@ -257,8 +259,7 @@ class Obb {
     return Obb(detail::Unchecked{}, c.template cast<T>(), half, u.template cast<T>());
   }
   /// As make(center, half_extents, angle), throwing the ShapeError.
-  Obb(const Vec2<T>& center, const Vec2<T>& half_extents, T angle)
-      : Obb(make(center, half_extents, angle).value()) {}
+  Obb(const Vec2<T>& center, const Vec2<T>& half_extents, T angle) : Obb(make(center, half_extents, angle).value()) {}
 
   /// Centre.
   const Vec2<T>& center() const noexcept { return center_; }
@@ -270,8 +271,7 @@ class Obb {
  private:
   friend struct detail::ObbAccess;
   friend struct detail::ShapeAccess;
-  Obb(detail::Unchecked, const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u)
-      : center_(c), half_(h), axis_(u) {}
+  Obb(detail::Unchecked, const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u) : center_(c), half_(h), axis_(u) {}
   Vec2<T> center_;
   Vec2<T> half_;
   Vec2<T> axis_;
@@ -410,7 +410,8 @@ class ConvexPolygon {
       const bool u0 = upper(at(k + 1) - at(k));
       const bool u1 = upper(at(k + 2) - at(k + 1));
       if (!u0 && u1) {
-        if (++crossings > 1) return ShapeError(Error::NonConvex, long(idx[(k + 1) % idx.size()]), "polygon winds more than once");
+        if (++crossings > 1)
+          return ShapeError(Error::NonConvex, long(idx[(k + 1) % idx.size()]), "polygon winds more than once");
       }
     }
     ConvexPolygon poly;
@@ -431,9 +432,8 @@ class ConvexPolygon {
     }
     detail::SmallList<Vec2<T>, 2 * kInline> p;
     for (const Vec2<T>& q : points) p.push_back(q);
-    std::sort(p.begin(), p.end(), [](const Vec2<T>& a, const Vec2<T>& b) {
-      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
+    std::sort(p.begin(), p.end(),
+              [](const Vec2<T>& a, const Vec2<T>& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
     p.resize_down(std::size_t(std::unique(p.begin(), p.end()) - p.begin()));
     if (p.size() < 3) return ShapeError(Error::TooFewVertices, -1, "fewer than 3 distinct points");
     detail::SmallList<Vec2<T>, 4 * kInline> h;
@@ -478,7 +478,8 @@ class ConvexPolygon {
   /// Every edge's unit outward normal, for the contact paths (polygons of at most kInline vertices).
   void cache_normals() noexcept {
     if (size_ > kInline) return;
-    for (std::size_t k = 0; k < size_; ++k) normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[(k + 1) % size_]));
+    for (std::size_t k = 0; k < size_; ++k)
+      normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[(k + 1) % size_]));
     normals_cached_ = true;
   }
   std::array<Vec2<T>, kInline> inline_{};

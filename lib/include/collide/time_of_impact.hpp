@@ -126,9 +126,10 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc r = pl.radius + ql.radius;
   const Calc speed = sweep_speed(sp, pl) + sweep_speed(sq, ql);
   const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
-  const Calc turning = (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_of(pl, widen(sp.local_center)) +
-                        std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_of(ql, widen(sq.local_center))) *
-                       (1 + kMotionBoundSlack);
+  const Calc turning =
+      (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_of(pl, widen(sp.local_center)) +
+       std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_of(ql, widen(sq.local_center))) *
+      (1 + kMotionBoundSlack);
   const Calc closing_error = 8 * kUnitRoundoff * (vp.cwiseAbs().sum() + vq.cwiseAbs().sum());
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
@@ -154,7 +155,8 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
 template <Scalar T>
 bool sweep_valid(const Sweep<T>& sw) noexcept {
   const Calc lim = static_cast<Calc>(max_magnitude<T>());
-  const T values[] = {sw.local_center.x(), sw.local_center.y(), sw.c0.x(), sw.c0.y(), sw.c1.x(), sw.c1.y(), sw.a0, sw.a1};
+  const T values[] = {sw.local_center.x(), sw.local_center.y(), sw.c0.x(), sw.c0.y(),
+                      sw.c1.x(),           sw.c1.y(),           sw.a0,     sw.a1};
   for (const T v : values) {
     const Calc x = static_cast<Calc>(v);
     if (!std::isfinite(x) || std::fabs(x) > lim) return false;
@@ -187,9 +189,9 @@ Calc toi_speed(const A& a, const Sweep<scalar_of_t<A>>& sa, const B& b, const Sw
 /// The distance bound eps of time_of_impact()'s contract for these sweeps (see the top of
 /// time_of_impact.hpp): at a hit's t the posed shapes are at most eps apart.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc toi_tolerance(const A& a, const Sweep<scalar_of_t<A>>& sa, const B& b, const Sweep<scalar_of_t<A>>& sb,
-                   scalar_of_t<A> max_t) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc toi_tolerance(const A& a, const Sweep<scalar_of_t<A>>& sa,
+                                                                           const B& b, const Sweep<scalar_of_t<A>>& sb,
+                                                                           scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   const Calc speed = detail::toi_speed(a, sa, b, sb);
   return 3 * detail::advance_target(detail::toi_scale(a, sa, b, sb)) +
@@ -201,9 +203,9 @@ Calc toi_tolerance(const A& a, const Sweep<scalar_of_t<A>>& sa, const B& b, cons
 /// and moved by sweep_a, meets b moved by sweep_b; the normal from a toward b and the point
 /// between the surfaces there, in world coordinates. See the contract at the top of this file.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-CastResult<scalar_of_t<A>> time_of_impact(const A& a, const Sweep<scalar_of_t<A>>& sweep_a, const B& b,
-                                          const Sweep<scalar_of_t<A>>& sweep_b, scalar_of_t<A> max_t = 1) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A>> time_of_impact(
+    const A& a, const Sweep<scalar_of_t<A>>& sweep_a, const B& b, const Sweep<scalar_of_t<A>>& sweep_b,
+    scalar_of_t<A> max_t = 1) {
   using T = scalar_of_t<A>;
   const Calc s_max = static_cast<Calc>(max_t);
   if (!detail::sweep_valid(sweep_a) || !detail::sweep_valid(sweep_b) || !(s_max >= 0 && s_max <= 1)) {
@@ -212,8 +214,9 @@ CastResult<scalar_of_t<A>> time_of_impact(const A& a, const Sweep<scalar_of_t<A>
   const Calc target = detail::advance_target(detail::toi_scale(a, sweep_a, b, sweep_b));
   const detail::CoreCast best =
       detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
-        return detail::core_before(q, p) ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target))
-                                         : detail::advance_swept(p, sweep_a, q, sweep_b, until, target);
+        return detail::core_before(q, p)
+                   ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target))
+                   : detail::advance_swept(p, sweep_a, q, sweep_b, until, target);
       });
   return detail::to_result<T>(best, s_max);
 }

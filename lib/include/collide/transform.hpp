@@ -30,9 +30,7 @@ struct Pose {
   Vec2c q = Vec2c(1, 0);    ///< rotation (cos, sin), as stored (|q| = 1 up to one rounding)
 
   /// R(q) v.
-  Vec2c rotate(const Vec2c& v) const noexcept {
-    return {q.x() * v.x() - q.y() * v.y(), q.y() * v.x() + q.x() * v.y()};
-  }
+  Vec2c rotate(const Vec2c& v) const noexcept { return {q.x() * v.x() - q.y() * v.y(), q.y() * v.x() + q.x() * v.y()}; }
   /// R(q) x + p.
   Vec2c apply(const Vec2c& x) const noexcept {
     const Vec2c r = rotate(x);
@@ -91,7 +89,8 @@ class Transform {
   /// moving between frames). Errors: NonFinite, OutOfRange (index 0, 1).
   Expected<Transform> moved(const Vec2<T>& v) const noexcept {
     const Vec2<T> p = p_ + v;
-    if (!detail::values_in_range<T>({p.x(), p.y()})) [[unlikely]] return detail::range_error<T>({p.x(), p.y()});
+    if (!detail::values_in_range<T>({p.x(), p.y()})) [[unlikely]]
+      return detail::range_error<T>({p.x(), p.y()});
     return Transform(p, q_);
   }
 

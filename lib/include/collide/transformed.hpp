@@ -85,7 +85,8 @@ template <class A, class B, Scalar T, class F>
 decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
   return visit_shape(a, [&](const auto& ca) {
     return visit_shape(b, [&](const auto& cb) {
-      return with_placed(ca, xa, [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
+      return with_placed(
+          ca, xa, [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
     });
   });
 }
@@ -98,23 +99,26 @@ decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, 
 template <AnyShape S>
 Calc transform_tolerance(const S& s, const Transform<scalar_of_t<S>>& x) {
   if (x.is_identity()) return placement_tolerance(s);
-  return detail::visit_shape(s, [&](const auto& c) { return detail::image_tolerance(x.pose(), detail::local_extent(c)); });
+  return detail::visit_shape(s,
+                             [&](const auto& c) { return detail::image_tolerance(x.pose(), detail::local_extent(c)); });
 }
 
 /// The band of overlaps(a, xa, b, xb): transform_tolerance(a, xa) + transform_tolerance(b, xb).
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc overlap_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
-                       const Transform<scalar_of_t<A>>& xb) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc overlap_tolerance(const A& a,
+                                                                               const Transform<scalar_of_t<A>>& xa,
+                                                                               const B& b,
+                                                                               const Transform<scalar_of_t<A>>& xb) {
   return transform_tolerance(a, xa) + transform_tolerance(b, xb);
 }
 
 /// The error unit of the transformed pair's rounded outputs: rounding_tolerance() of the world
 /// images (S their largest coordinate) plus transform_tolerance() of each.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc rounding_tolerance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
-                        const Transform<scalar_of_t<A>>& xb) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc rounding_tolerance(const A& a,
+                                                                                const Transform<scalar_of_t<A>>& xa,
+                                                                                const B& b,
+                                                                                const Transform<scalar_of_t<A>>& xb) {
   const Calc s = std::max(detail::box_scale(bounds(a, xa)), detail::box_scale(bounds(b, xb)));
   return kOverlapErrorFactor * kUnitRoundoff * s + kAbsoluteFloor + overlap_tolerance(a, xa, b, xb);
 }
@@ -137,7 +141,7 @@ Aabb<scalar_of_t<S>> bounds(const S& s, const Transform<scalar_of_t<S>>& x) {
 /// overlaps() of a placed by xa and b placed by xb. Exact outside the band overlap_tolerance(a, xa,
 /// b, xb); equal to overlaps(a, b) for identities. Symmetric to the bit.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 bool overlaps(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
   if (xa.is_identity() && xb.is_identity()) return overlaps(a, b);
   return detail::with_placed_pair(a, xa, b, xb,
@@ -148,9 +152,9 @@ bool overlaps(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const
 /// Extra arguments are those of the world-space contact(), passed on. Error: the world-space
 /// bound with rounding_tolerance(a, xa, b, xb) as its unit.
 template <AnyShape A, AnyShape B, class... Extra>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
-                                               const Transform<scalar_of_t<A>>& xb, const Extra&... extra) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<scalar_of_t<A>>> contact(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
+    const Extra&... extra) {
   using T = scalar_of_t<A>;
   if (xa.is_identity() && xb.is_identity()) return detail::contact_as<T>(a, b, extra...);
   return detail::with_placed_pair(
@@ -163,9 +167,8 @@ std::optional<Contact<scalar_of_t<A>>> contact(const A& a, const Transform<scala
 /// (the depth is computed on one image and the moved shape is another). resolve_margin(a, b,
 /// depth) for two identities.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Calc resolve_margin(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
-                    Calc depth) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc resolve_margin(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb, Calc depth) {
   if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth);
   const Calc sa = std::max(detail::box_scale(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
   const Calc s = std::max(sa, detail::box_scale(bounds(b, xb)));
@@ -177,9 +180,8 @@ Calc resolve_margin(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
 /// resolve_margin(a, xa, b, xb, depth); tested by moving a's transform only for polygons and
 /// compounds, as resolve() does.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-Vec2<scalar_of_t<A>> resolve(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b,
-                             const Transform<scalar_of_t<A>>& xb) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> resolve(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
   using T = scalar_of_t<A>;
   if (xa.is_identity() && xb.is_identity()) return resolve(a, b);
   const Calc extra = 2 * overlap_tolerance(a, xa, b, xb);
@@ -187,7 +189,8 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const Transform<scalar_of_t<A>>& xa, co
     return detail::with_placed(ca, xa, [&](const auto& pa) {
       return detail::visit_shape(b, [&](const auto& cb) {
         return detail::with_placed(cb, xb, [&](const auto& pb) {
-          const Calc s_moved = std::max(detail::scale_of(detail::calc_bounds(pa)), widen(xa.position()).cwiseAbs().maxCoeff());
+          const Calc s_moved =
+              std::max(detail::scale_of(detail::calc_bounds(pa)), widen(xa.position()).cwiseAbs().maxCoeff());
           const auto still = [&](const Vec2<T>& v) -> std::optional<bool> {
             const Expected<Transform<T>> moved = xa.moved(v);
             if (!moved) return std::nullopt;
@@ -204,8 +207,10 @@ Vec2<scalar_of_t<A>> resolve(const A& a, const Transform<scalar_of_t<A>>& xa, co
 /// least the smallest positive T. Error: within a few rounding_tolerance(a, xa, b, xb) of the
 /// exact images' gap.
 template <AnyShape A, AnyShape B>
-  requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
-scalar_of_t<A> distance(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> scalar_of_t<A> distance(const A& a,
+                                                                                const Transform<scalar_of_t<A>>& xa,
+                                                                                const B& b,
+                                                                                const Transform<scalar_of_t<A>>& xb) {
   using T = scalar_of_t<A>;
   if (xa.is_identity() && xb.is_identity()) return distance(a, b);
   return detail::with_placed_pair(a, xa, b, xb,

@@ -84,8 +84,7 @@ Expected<Compound<T>> translated(const Compound<T>& s, const Vec2<T>& v) {
 /// (NonFinite, OutOfRange when the move leaves the representable range; Collinear when rounding
 /// collapses a thin polygon).
 template <class S>
-  requires VariantShape<S>
-Expected<S> translated(const S& s, const Vec2<scalar_of_t<S>>& v) {
+requires VariantShape<S> Expected<S> translated(const S& s, const Vec2<scalar_of_t<S>>& v) {
   return std::visit(
       [&](const auto& x) -> Expected<S> {
         auto m = translated(x, v);

@@ -35,7 +35,9 @@ namespace {
 using NT = CGAL::Gmpzf;
 using Vec2d = Vec2<double>;
 
-int sign_of(const NT& x) { return static_cast<int>(CGAL::sign(x)); }
+int sign_of(const NT& x) {
+  return static_cast<int>(CGAL::sign(x));
+}
 
 void require_finite(double v, const char* what) {
   if (!std::isfinite(v)) throw InvalidInput(std::string("oracle: non-finite ") + what);
@@ -48,12 +50,24 @@ void require_finite(const Vec2d& v, const char* what) {
 struct P {
   NT x, y;
 };
-P sub(const P& a, const P& b) { return {a.x - b.x, a.y - b.y}; }
-NT cross(const P& a, const P& b) { return a.x * b.y - a.y * b.x; }
-NT dot(const P& a, const P& b) { return a.x * b.x + a.y * b.y; }
-int orient(const P& a, const P& b, const P& c) { return sign_of(cross(sub(b, a), sub(c, a))); }
-bool less_xy(const P& a, const P& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-bool same(const P& a, const P& b) { return a.x == b.x && a.y == b.y; }
+P sub(const P& a, const P& b) {
+  return {a.x - b.x, a.y - b.y};
+}
+NT cross(const P& a, const P& b) {
+  return a.x * b.y - a.y * b.x;
+}
+NT dot(const P& a, const P& b) {
+  return a.x * b.x + a.y * b.y;
+}
+int orient(const P& a, const P& b, const P& c) {
+  return sign_of(cross(sub(b, a), sub(c, a)));
+}
+bool less_xy(const P& a, const P& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+bool same(const P& a, const P& b) {
+  return a.x == b.x && a.y == b.y;
+}
 
 using Points = boost::container::small_vector<P, 16>;
 
@@ -137,7 +151,9 @@ Core hull_of(Points pts, const NT& radius) {
   return c;
 }
 
-bool between(const P& p, const P& a, const P& b) { return sign_of(dot(sub(p, a), sub(p, b))) <= 0; }
+bool between(const P& p, const P& a, const P& b) {
+  return sign_of(dot(sub(p, a), sub(p, b))) <= 0;
+}
 
 bool point_in(const P& p, const Core& c) {
   if (c.v.size() == 1) return same(p, c.v[0]);
@@ -190,7 +206,8 @@ int sign_point_core(const P& x, const Core& c, const NT& r2) {
     return sign_of(dot(u, u) - r2);
   }
   int best = 1;
-  for (std::size_t j = 0; j < c.edge_count() && best > -1; ++j) best = std::min(best, sign_point_segment(x, c.v[j], c.at(j + 1), r2));
+  for (std::size_t j = 0; j < c.edge_count() && best > -1; ++j)
+    best = std::min(best, sign_point_segment(x, c.v[j], c.at(j + 1), r2));
   return best;
 }
 
@@ -217,7 +234,9 @@ Core posed(const Core& c, const Vec2d& q, const Vec2d& p) {
   return hull_of(pts, c.radius);
 }
 
-bool is_identity(const Vec2d& q, const Vec2d& p) { return p == Vec2d(0, 0) && q == Vec2d(1, 0); }
+bool is_identity(const Vec2d& q, const Vec2d& p) {
+  return p == Vec2d(0, 0) && q == Vec2d(1, 0);
+}
 
 using Cores = boost::container::small_vector<Core, 4>;
 

@@ -30,12 +30,16 @@ namespace collide::oracle {
 namespace {
 
 using Interval = CGAL::Interval_nt_advanced;
-using Exact = CGAL::Gmpzf;               // exact +, -, * (no gcd): the fallback pass
+using Exact = CGAL::Gmpzf;              // exact +, -, * (no gcd): the fallback pass
 using Rational = CGAL::Exact_rational;  // with division: exact distances for reports
 using Vec2d = Vec2<double>;
 
-int sign_of(const Exact& x) { return static_cast<int>(CGAL::sign(x)); }
-int sign_of(const Rational& x) { return static_cast<int>(CGAL::sign(x)); }
+int sign_of(const Exact& x) {
+  return static_cast<int>(CGAL::sign(x));
+}
+int sign_of(const Rational& x) {
+  return static_cast<int>(CGAL::sign(x));
+}
 
 void require_finite(double v, const char* what) {
   if (!std::isfinite(v)) throw InvalidInput(std::string("oracle: non-finite ") + what);
@@ -240,15 +244,30 @@ Core<NT> realize_local(const CoreInput& s, const P<NT>* shift) {
   // center +- hx*u +- hy*v with v = (-u.y, u.x), all exact.
   const NT cx(s.center.x()), cy(s.center.y()), ux(s.axis.x()), uy(s.axis.y());
   const NT hx(s.hx), hy(s.hy);
-  const NT ax = hx * ux, ay = hx * uy;    // hx*u
+  const NT ax = hx * ux, ay = hx * uy;     // hx*u
   const NT bx = -(hy * uy), by = hy * ux;  // hy*v
   auto corner = [&](int su, int sv) {
     NT x = cx, y = cy;
-    if (su > 0) { x += ax; y += ay; }
-    if (su < 0) { x -= ax; y -= ay; }
-    if (sv > 0) { x += bx; y += by; }
-    if (sv < 0) { x -= bx; y -= by; }
-    if (shift) { x += shift->x; y += shift->y; }
+    if (su > 0) {
+      x += ax;
+      y += ay;
+    }
+    if (su < 0) {
+      x -= ax;
+      y -= ay;
+    }
+    if (sv > 0) {
+      x += bx;
+      y += by;
+    }
+    if (sv < 0) {
+      x -= bx;
+      y -= by;
+    }
+    if (shift) {
+      x += shift->x;
+      y += shift->y;
+    }
     return P<NT>{x, y};
   };
   const bool zx = s.hx == 0, zy = s.hy == 0;
@@ -800,7 +819,8 @@ bool within_band(const Placed& a, const Placed& b, double band) {
   const Parts pa = parts_of(a), pb = parts_of(b);
   const bool any_overlap = any_pair(pa, pb, [](const CoreInput& x, const CoreInput& y) { return prim_overlaps(x, y); });
   if (!any_overlap) {
-    return any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) { return prim_compare_distance(x, y, band) <= 0; });
+    return any_pair(pa, pb,
+                    [&](const CoreInput& x, const CoreInput& y) { return prim_compare_distance(x, y, band) <= 0; });
   }
   const bool deep = any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) {
     return prim_overlaps(x, y) && prim_compare_depth(x, y, band) > 0;
@@ -861,8 +881,10 @@ double approx_signed_distance(const Placed& a, const Placed& b) {
   bool hit = false;
   double gap = std::numeric_limits<double>::infinity();
   any_pair(pa, pb, [&](const CoreInput& x, const CoreInput& y) {
-    if (prim_overlaps(x, y)) hit = true;
-    else gap = std::min(gap, prim_signed_distance(x, y));
+    if (prim_overlaps(x, y))
+      hit = true;
+    else
+      gap = std::min(gap, prim_signed_distance(x, y));
     return hit;
   });
   return hit ? -0.0 : gap;

@@ -51,8 +51,7 @@ TEST(OracleDepth, CircleAgainstBox) {
   // Center inside the box: distance to the nearest side + r.
   expect_depth(Circle<double>(V(0, 0), 0.5), Aabb<double>(V(-1, -2), V(3, 2)), 1.5);
   // Rotated box (axis (0, 1): exact unit), center inside.
-  expect_depth(Circle<double>(V(0, 0), 0.5),
-               Obb<double>::make_with_axis(V(0, 0), V(3, 1), V(0, 1)).value(), 1.5);
+  expect_depth(Circle<double>(V(0, 0), 0.5), Obb<double>::make_with_axis(V(0, 0), V(3, 1), V(0, 1)).value(), 1.5);
 }
 
 TEST(OracleDepth, CapsulesAndPolygons) {
@@ -75,8 +74,8 @@ TEST(OracleDepth, CompoundsAreUnsupported) {
 
 TEST(OracleBand, PrimitivesUseTheSignedDistance) {
   const Circle<double> a(V(0, 0), 1.0);
-  const Circle<double> apart(V(3, 0), 1.0);      // gap 1
-  const Circle<double> deep(V(1.5, 0), 1.0);     // depth 0.5
+  const Circle<double> apart(V(3, 0), 1.0);   // gap 1
+  const Circle<double> deep(V(1.5, 0), 1.0);  // depth 0.5
   EXPECT_TRUE(oracle::within_band(a, apart, 1.0));
   EXPECT_FALSE(oracle::within_band(a, apart, 0.999));
   EXPECT_TRUE(oracle::within_band(a, deep, 0.5));

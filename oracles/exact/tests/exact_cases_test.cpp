@@ -14,8 +14,12 @@ namespace {
 
 using V = Vec2<double>;
 
-double next_up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
-double next_down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+double next_up(double x) {
+  return std::nextafter(x, std::numeric_limits<double>::infinity());
+}
+double next_down(double x) {
+  return std::nextafter(x, -std::numeric_limits<double>::infinity());
+}
 
 ConvexPolygon<double> square(double x0, double y0, double side) {
   return ConvexPolygon<double>({V(x0, y0), V(x0 + side, y0), V(x0 + side, y0 + side), V(x0, y0 + side)});
@@ -93,8 +97,8 @@ TEST(OracleExact, CircleAndBoxContainingOneAnother) {
 
 TEST(OracleExact, SquaresSharingOnlyAnEdgeOrAVertexOverlap) {
   // Regularised Boolean operations report no intersection for these.
-  EXPECT_TRUE(oracle::overlaps(square(0, 0, 1), square(1, 0, 1)));   // shared edge
-  EXPECT_TRUE(oracle::overlaps(square(0, 0, 1), square(1, 1, 1)));   // shared vertex
+  EXPECT_TRUE(oracle::overlaps(square(0, 0, 1), square(1, 0, 1)));    // shared edge
+  EXPECT_TRUE(oracle::overlaps(square(0, 0, 1), square(1, 1, 1)));    // shared vertex
   EXPECT_TRUE(oracle::overlaps(square(0, 0, 1), square(1, 0.5, 1)));  // partly shared edge
   EXPECT_FALSE(oracle::overlaps(square(0, 0, 1), square(next_up(1.0), 1, 1)));
   EXPECT_TRUE(oracle::overlaps(Aabb<double>(V(0, 0), V(1, 1)), Aabb<double>(V(1, 1), V(2, 2))));
@@ -144,17 +148,19 @@ TEST(OracleExact, InsideBoxUsesExactExtremes) {
   EXPECT_TRUE(oracle::inside_box(Capsule<double>(V(0.25, 0.25), V(0.75, 0.75), 0.25), box));
   EXPECT_TRUE(oracle::inside_box(box, box));
   EXPECT_FALSE(oracle::inside_box(Obb<double>(V(0.5, 0.5), V(0.5, 0.5), 0.3), box));
-  EXPECT_TRUE(oracle::inside_box(Compound<double>({Circle<double>(V(0.2, 0.2), 0.1), Aabb<double>(V(0.5, 0.5), V(1, 1))}), box));
-  EXPECT_FALSE(oracle::inside_box(Compound<double>({Circle<double>(V(0.2, 0.2), 0.1), Aabb<double>(V(0.5, 0.5), V(1, 2))}), box));
+  EXPECT_TRUE(oracle::inside_box(
+      Compound<double>({Circle<double>(V(0.2, 0.2), 0.1), Aabb<double>(V(0.5, 0.5), V(1, 1))}), box));
+  EXPECT_FALSE(oracle::inside_box(
+      Compound<double>({Circle<double>(V(0.2, 0.2), 0.1), Aabb<double>(V(0.5, 0.5), V(1, 2))}), box));
 }
 
 TEST(OracleExact, BoundaryDistanceInsideAndOutside) {
   const ConvexPolygon<double> sq = square(0, 0, 4);
-  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(1, 2), 1.0), 0);   // inside: nearest edge x = 0
+  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(1, 2), 1.0), 0);  // inside: nearest edge x = 0
   EXPECT_EQ(oracle::compare_boundary_distance(sq, V(1, 2), 0.5), 1);
-  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(6, 2), 2.0), 0);   // outside
-  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(7, 8), 5.0), 0);   // outside, 3-4-5 to the corner
-  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(4, 1), 0.0), 0);   // on the boundary
+  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(6, 2), 2.0), 0);  // outside
+  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(7, 8), 5.0), 0);  // outside, 3-4-5 to the corner
+  EXPECT_EQ(oracle::compare_boundary_distance(sq, V(4, 1), 0.0), 0);  // on the boundary
   const Circle<double> c(V(0, 0), 2.0);
   EXPECT_EQ(oracle::compare_boundary_distance(c, V(0.5, 0), 1.5), 0);
   EXPECT_EQ(oracle::compare_boundary_distance(c, V(0, 0), 2.0), 0);
@@ -171,7 +177,7 @@ TEST(OracleExact, BoundaryDistanceInsideAndOutside) {
 
 TEST(OracleExact, SeparatesTranslatesExactly) {
   const Aabb<double> a(V(0, 0), V(1, 1)), b(V(2, 0), V(3, 1));
-  EXPECT_FALSE(oracle::separates(a, b, V(1, 0)));       // touching after the move
+  EXPECT_FALSE(oracle::separates(a, b, V(1, 0)));  // touching after the move
   EXPECT_TRUE(oracle::separates(a, b, V(next_down(1.0), 0)));
   // 0.1 + 0.2 is not rounded: a moved by 0.2 from 0.1 ends just beyond the double 0.3.
   const Circle<double> p(V(0.1, 0), 0.0);
@@ -179,7 +185,7 @@ TEST(OracleExact, SeparatesTranslatesExactly) {
   EXPECT_TRUE(oracle::separates(p, wall, V(0.2, 0)));
   EXPECT_FALSE(oracle::separates(p, wall, V(0.19, 0)));
   EXPECT_TRUE(oracle::separates(Compound<double>({Circle<double>(V(0, 0), 1.0), Circle<double>(V(5, 0), 1.0)}),
-                        Circle<double>(V(10, 0), 1.0), V(0, 5)));
+                                Circle<double>(V(10, 0), 1.0), V(0, 5)));
 }
 
 TEST(OracleExact, ApproximateSignedDistance) {

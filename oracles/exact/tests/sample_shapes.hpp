@@ -42,11 +42,21 @@ ShapeOf<K, double> sample_shape(std::mt19937_64& rng, const Vec2<double>& center
     for (int i = 0; i < n; ++i) {
       const Vec2<double> cc = c + Vec2<double>(off(rng), off(rng));
       switch (rng() % 5) {
-        case 0: children.emplace_back(sample_shape<ShapeKind::Circle>(rng, cc, 0.5 * size)); break;
-        case 1: children.emplace_back(sample_shape<ShapeKind::Aabb>(rng, cc, 0.5 * size)); break;
-        case 2: children.emplace_back(sample_shape<ShapeKind::Obb>(rng, cc, 0.5 * size)); break;
-        case 3: children.emplace_back(sample_shape<ShapeKind::Capsule>(rng, cc, 0.5 * size)); break;
-        default: children.emplace_back(sample_shape<ShapeKind::Polygon>(rng, cc, 0.5 * size)); break;
+        case 0:
+          children.emplace_back(sample_shape<ShapeKind::Circle>(rng, cc, 0.5 * size));
+          break;
+        case 1:
+          children.emplace_back(sample_shape<ShapeKind::Aabb>(rng, cc, 0.5 * size));
+          break;
+        case 2:
+          children.emplace_back(sample_shape<ShapeKind::Obb>(rng, cc, 0.5 * size));
+          break;
+        case 3:
+          children.emplace_back(sample_shape<ShapeKind::Capsule>(rng, cc, 0.5 * size));
+          break;
+        default:
+          children.emplace_back(sample_shape<ShapeKind::Polygon>(rng, cc, 0.5 * size));
+          break;
       }
     }
     return Compound<double>(std::move(children));

@@ -102,8 +102,8 @@ void write_case(std::ostream& out, const Case& c) {
   if (law == Law::Rotation) out << "rotation " << c.quarter_turns << " mirror " << (c.mirror ? 1 : 0) << '\n';
   if (law == Law::Raycast || law == Law::PlacedShape || law == Law::CastRaycast)
     out << "# ray (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ") + t (" << detail::num(c.dx) << ", "
-        << detail::num(c.dy) << "), t <= " << detail::num(c.max_t) << "\nray " << hex(c.ox) << ' ' << hex(c.oy)
-        << ' ' << hex(c.dx) << ' ' << hex(c.dy) << " max_t " << hex(c.max_t) << '\n';
+        << detail::num(c.dy) << "), t <= " << detail::num(c.max_t) << "\nray " << hex(c.ox) << ' ' << hex(c.oy) << ' '
+        << hex(c.dx) << ' ' << hex(c.dy) << " max_t " << hex(c.max_t) << '\n';
   if (law == Law::Contains || law == Law::PlacedShape)
     out << "# point (" << detail::num(c.px) << ", " << detail::num(c.py) << ")\npoint " << hex(c.px) << ' ' << hex(c.py)
         << '\n';
@@ -148,7 +148,8 @@ Case read_case(std::istream& in) {
     auto where = [&] { return "line " + std::to_string(line) + ": "; };
     if (!header) {
       int version = 0;
-      if (key != "collide-case" || !(ls >> version) || version != 1) throw CaseError(where() + "expected 'collide-case 1'");
+      if (key != "collide-case" || !(ls >> version) || version != 1)
+        throw CaseError(where() + "expected 'collide-case 1'");
       header = true;
       continue;
     }
@@ -200,7 +201,8 @@ Case read_case(std::istream& in) {
     } else if (key == "rotation") {
       std::string m;
       int mirror = 0;
-      if (!(ls >> c.quarter_turns >> m >> mirror) || m != "mirror") throw CaseError(where() + "expected 'rotation K mirror 0|1'");
+      if (!(ls >> c.quarter_turns >> m >> mirror) || m != "mirror")
+        throw CaseError(where() + "expected 'rotation K mirror 0|1'");
       c.mirror = mirror != 0;
     } else if (key == "ray") {
       constexpr const char* form = "ray ox oy dx dy max_t T";
@@ -339,43 +341,69 @@ Verdict replay_as(const Case& c) {
   const Vec2<T> point = vec<T>(c.px, c.py), move = vec<T>(c.tx, c.ty);
   const CastInput<T> motion{vec<T>(c.vax, c.vay), vec<T>(c.vbx, c.vby), narrow<T>(c.max_t), xa, xb};
   switch (law) {
-    case Law::Agreement: return agreement(shape_a(), shape_b());
-    case Law::Symmetry: return symmetry(shape_a(), shape_b());
-    case Law::Translation: return translation(shape_a(), shape_b(), move);
-    case Law::Rotation: return rotation(shape_a(), shape_b(), c.quarter_turns, c.mirror);
-    case Law::Resolution: return resolution(shape_a(), shape_b());
-    case Law::Bounds: return bounds_law(shape_a());
-    case Law::Raycast: return raycast_law(shape_a(), ray, narrow<T>(c.max_t));
-    case Law::Hierarchy: return hierarchy(shape_a(), shape_b());
-    case Law::Representation: return representation(shape_a(), shape_b());
-    case Law::Contact: return contact_law(shape_a(), shape_b());
-    case Law::Distance: return distance_law(shape_a(), shape_b());
+    case Law::Agreement:
+      return agreement(shape_a(), shape_b());
+    case Law::Symmetry:
+      return symmetry(shape_a(), shape_b());
+    case Law::Translation:
+      return translation(shape_a(), shape_b(), move);
+    case Law::Rotation:
+      return rotation(shape_a(), shape_b(), c.quarter_turns, c.mirror);
+    case Law::Resolution:
+      return resolution(shape_a(), shape_b());
+    case Law::Bounds:
+      return bounds_law(shape_a());
+    case Law::Raycast:
+      return raycast_law(shape_a(), ray, narrow<T>(c.max_t));
+    case Law::Hierarchy:
+      return hierarchy(shape_a(), shape_b());
+    case Law::Representation:
+      return representation(shape_a(), shape_b());
+    case Law::Contact:
+      return contact_law(shape_a(), shape_b());
+    case Law::Distance:
+      return distance_law(shape_a(), shape_b());
     case Law::Rejection: {
       const std::vector<T> x = values();
       return rejection<T>(c.a.kind, std::span<const T>(x));
     }
-    case Law::Contains: return contains_law(shape_a(), point);
-    case Law::Touching: return touching(shape_a(), shape_b());
-    case Law::Scene: return scene(shape_a());
-    case Law::Separation: return manifold_separation(shape_a(), shape_b());
-    case Law::FeatureIds: return manifold_ids(shape_a(), shape_b());
-    case Law::Speculative: return manifold_speculative(shape_a(), shape_b());
-    case Law::PlacedAgreement: return placed_agreement(shape_a(), xa, shape_b(), xb);
-    case Law::PlacedOutputs: return placed_outputs(shape_a(), xa, shape_b(), xb);
-    case Law::PlacedResolution: return placed_resolution(shape_a(), xa, shape_b(), xb);
-    case Law::PlacedShape: return placed_shape(shape_a(), xa, point, ray, narrow<T>(c.max_t));
+    case Law::Contains:
+      return contains_law(shape_a(), point);
+    case Law::Touching:
+      return touching(shape_a(), shape_b());
+    case Law::Scene:
+      return scene(shape_a());
+    case Law::Separation:
+      return manifold_separation(shape_a(), shape_b());
+    case Law::FeatureIds:
+      return manifold_ids(shape_a(), shape_b());
+    case Law::Speculative:
+      return manifold_speculative(shape_a(), shape_b());
+    case Law::PlacedAgreement:
+      return placed_agreement(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedOutputs:
+      return placed_outputs(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedResolution:
+      return placed_resolution(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedShape:
+      return placed_shape(shape_a(), xa, point, ray, narrow<T>(c.max_t));
     case Law::PlacedCovariance:
       if (c.transform_b) throw CaseError("law 'placed_covariance' moves both shapes by transform a only");
       return placed_covariance(shape_a(), shape_b(), xa);
-    case Law::PlacedImage: return placed_image(shape_a(), xa, shape_b());
+    case Law::PlacedImage:
+      return placed_image(shape_a(), xa, shape_b());
     case Law::TransformRejection: {
       const std::vector<T> x = values();
       return transform_rejection<T>(std::span<const T>(x));
     }
-    case Law::Cast: return cast_law(shape_a(), shape_b(), motion);
-    case Law::CastSymmetry: return cast_symmetry(shape_a(), shape_b(), motion);
-    case Law::CastTranslation: return cast_translation(shape_a(), shape_b(), motion, move);
-    case Law::CastRaycast: return cast_raycast(shape_a(), ray, narrow<T>(c.max_t));
+    case Law::Cast:
+      return cast_law(shape_a(), shape_b(), motion);
+    case Law::CastSymmetry:
+      return cast_symmetry(shape_a(), shape_b(), motion);
+    case Law::CastTranslation:
+      return cast_translation(shape_a(), shape_b(), motion, move);
+    case Law::CastRaycast:
+      return cast_raycast(shape_a(), ray, narrow<T>(c.max_t));
     case Law::Toi:
       return toi_law(shape_a(), sweep_of<T>(c.sweep_a), shape_b(), sweep_of<T>(c.sweep_b), narrow<T>(c.max_t),
                      std::span<const double>(kToiSamples));
@@ -399,8 +427,7 @@ Verdict replay(const Case& c) {
 }
 
 template <Scalar T>
-Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v,
-               std::string source) {
+Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v, std::string source) {
   Case c;
   c.law = law;
   c.scalar = std::is_same_v<T, float> ? "float" : "double";
@@ -415,7 +442,7 @@ Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, con
 
 template Case make_case<float>(Law, const Shape<float>&, const std::optional<Shape<float>>&, const Verdict&,
                                std::string);
-template Case make_case<double>(Law, const Shape<double>&, const std::optional<Shape<double>>&,
-                                const Verdict&, std::string);
+template Case make_case<double>(Law, const Shape<double>&, const std::optional<Shape<double>>&, const Verdict&,
+                                std::string);
 
 }  // namespace collide::laws

@@ -22,10 +22,14 @@ using detail::vec;
 
 std::string_view outcome_name(CastOutcome o) {
   switch (o) {
-    case CastOutcome::Hit: return "hit";
-    case CastOutcome::Miss: return "miss";
-    case CastOutcome::IterationLimit: return "iteration limit";
-    case CastOutcome::InvalidInput: return "invalid input";
+    case CastOutcome::Hit:
+      return "hit";
+    case CastOutcome::Miss:
+      return "miss";
+    case CastOutcome::IterationLimit:
+      return "iteration limit";
+    case CastOutcome::InvalidInput:
+      return "invalid input";
   }
   return "?";
 }
@@ -125,14 +129,17 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
     return v;
   }
   if (!(t >= 0 && t <= max_t)) fail(v, "0 <= t <= max_t", num(t));
-  if (start && !(r.hit() && r.t == T(0))) fail(v, "a hit at t = 0 (the shapes overlap at the start)", describe_result(r));
+  if (start && !(r.hit() && r.t == T(0)))
+    fail(v, "a hit at t = 0 (the shapes overlap at the start)", describe_result(r));
   if (!v.ok) return v;
   switch (r.outcome) {
     case CastOutcome::Miss:
-      if (oracle::meets_during(ea, in.va, eb, in.vb, 0.0, max_t)) fail(v, "no contact in [0, max_t] after a miss", "the exact shapes meet in [0, max_t]");
+      if (oracle::meets_during(ea, in.va, eb, in.vb, 0.0, max_t))
+        fail(v, "no contact in [0, max_t] after a miss", "the exact shapes meet in [0, max_t]");
       break;
     case CastOutcome::IterationLimit:
-      if (oracle::meets_during(ea, in.va, eb, in.vb, 0.0, t)) fail(v, "apart on [0, t] at the iteration limit", "the exact shapes meet in [0, t]");
+      if (oracle::meets_during(ea, in.va, eb, in.vb, 0.0, t))
+        fail(v, "apart on [0, t] at the iteration limit", "the exact shapes meet in [0, t]");
       break;
     case CastOutcome::Hit: {
       const double len = std::hypot(double(r.normal.x()), double(r.normal.y()));
@@ -140,13 +147,17 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
       if (start) {
         // The computed images may be apart within their tolerance: then no contact to compare.
         const auto c = contact(a, in.xa, b, in.xb);
-        if (c && (c->normal != r.normal || c->points[0] != r.point)) fail(v, "contact(a, xa, b, xb)'s normal and first point at t = 0", describe_result(r));
-        if (!c && !oracle::within_band(ea, eb, overlap_tolerance(a, in.xa, b, in.xb))) fail(v, "contact(a, xa, b, xb) for shapes overlapping beyond the transforms' band", "none");
+        if (c && (c->normal != r.normal || c->points[0] != r.point))
+          fail(v, "contact(a, xa, b, xb)'s normal and first point at t = 0", describe_result(r));
+        if (!c && !oracle::within_band(ea, eb, overlap_tolerance(a, in.xa, b, in.xb)))
+          fail(v, "contact(a, xa, b, xb) for shapes overlapping beyond the transforms' band", "none");
         break;
       }
       // Never later than the first contact: apart over [0, t] (t > 0), and within eps at t.
-      if (t > 0 && oracle::meets_during(ea, in.va, eb, in.vb, 0.0, t)) fail(v, "apart on [0, t] (t no later than the first contact)", "the exact shapes meet in [0, t]: tunnelled");
-      if (!oracle::meets_during(ea, in.va, eb, in.vb, t, t, eps)) fail(v, "the exact shapes within the tolerance at t", "farther apart at t");
+      if (t > 0 && oracle::meets_during(ea, in.va, eb, in.vb, 0.0, t))
+        fail(v, "apart on [0, t] (t no later than the first contact)", "the exact shapes meet in [0, t]: tunnelled");
+      if (!oracle::meets_during(ea, in.va, eb, in.vb, t, t, eps))
+        fail(v, "the exact shapes within the tolerance at t", "farther apart at t");
       // The normal points from a toward b: beyond the point along it lies only b's side, and
       // back along it only a's.
       const double L = std::max({size_of(a, in.xa), size_of(b, in.xb), 256 * eps});
@@ -162,7 +173,9 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
                             far_at(Vec2<double>(p - n * L), cb, in.vb, t, L - slack));
         }
       }
-      if (!sides) fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)", describe_result(r));
+      if (!sides)
+        fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)",
+             describe_result(r));
       // The point lies between the two surfaces, within the gap (<= eps) of both.
       const double reach = 2 * eps + 8 * detail::eps<T>() * (std::fabs(p.x()) + std::fabs(p.y()));
       if (far_at(p, ea, in.va, t, reach) || far_at(p, eb, in.vb, t, reach)) {
@@ -170,7 +183,8 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
       }
       break;
     }
-    case CastOutcome::InvalidInput: break;
+    case CastOutcome::InvalidInput:
+      break;
   }
   return v;
 }
@@ -180,21 +194,25 @@ Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& 
   Verdict v;
   const CastResult<T> r = cast_of(a, b, in);
   const CastResult<T> s = cast_of(b, a, CastInput<T>{in.vb, in.va, in.max_t, in.xb, in.xa});
-  v.relation = oracle::overlaps(oracle::placed(a, in.xa), oracle::placed(b, in.xb)) ? Relation::Overlapping : Relation::Separated;
+  v.relation = oracle::overlaps(oracle::placed(a, in.xa), oracle::placed(b, in.xb)) ? Relation::Overlapping
+                                                                                    : Relation::Separated;
   v.account = "shape_cast(a, va, b, vb) = " + describe_result(r) + "; swapped: " + describe_result(s) + "; " +
               describe_input(a, b, in);
-  if (r.outcome != s.outcome || r.t != s.t) fail(v, "the swapped cast gives the same outcome and t", describe_result(s));
+  if (r.outcome != s.outcome || r.t != s.t)
+    fail(v, "the swapped cast gives the same outcome and t", describe_result(s));
   // At t = 0 from an overlap the normal is contact()'s, symmetric within its own tolerance
   // (contact law); elsewhere it is computed in one order and negated: bit for bit.
   const bool start = r.hit() && r.t == T(0) && overlaps(a, in.xa, b, in.xb);
-  if (r.hit() && !start && s.normal != Vec2<T>(-r.normal)) fail(v, "the swapped cast's normal reversed", describe_result(s));
+  if (r.hit() && !start && s.normal != Vec2<T>(-r.normal))
+    fail(v, "the swapped cast's normal reversed", describe_result(s));
   // Relative motion: only va - vb matters (when T represents it exactly).
   const Vec2<T> w = in.va - in.vb;
   if (widen(w) == widen(in.va) - widen(in.vb)) {
     const CastResult<T> q = cast_of(a, b, CastInput<T>{w, Vec2<T>(0, 0), in.max_t, in.xa, in.xb});
     // The point is in the world of time t: b's motion moves it by vb t (one rounding of T).
     const double moved = (widen(q.point) + widen(in.vb) * double(r.t) - widen(r.point)).cwiseAbs().maxCoeff();
-    const double bound = 4 * detail::eps<T>() * (widen(r.point).cwiseAbs().maxCoeff() + widen(in.vb).cwiseAbs().maxCoeff() * double(r.t));
+    const double bound = 4 * detail::eps<T>() *
+                         (widen(r.point).cwiseAbs().maxCoeff() + widen(in.vb).cwiseAbs().maxCoeff() * double(r.t));
     if (q.outcome != r.outcome || q.t != r.t || (!start && q.normal != r.normal) || (r.hit() && !(moved <= bound))) {
       fail(v, "cast(a, va - vb, b, 0): the same outcome, t and normal, the point moved by vb t", describe_result(q));
     }
@@ -231,7 +249,8 @@ Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T
     in2.xb = *xb;
     exact = true;
     for (const auto& [x, x2] : {std::pair{in.xa, in2.xa}, std::pair{in.xb, in2.xb}}) {
-      for (int k = 0; k < 2; ++k) exact = exact && detail::exact_sum(double(x.position()[k]), double(d[k]), double(x2.position()[k]));
+      for (int k = 0; k < 2; ++k)
+        exact = exact && detail::exact_sum(double(x.position()[k]), double(d[k]), double(x2.position()[k]));
     }
   }
   const CastResult<T> r = cast_of(a, b, in);
@@ -269,18 +288,20 @@ Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t) {
   const Shape<T> p = dot;
   v.relation = oracle::overlaps(p, s) ? Relation::Overlapping : Relation::Separated;
   v.account = "zero-radius circle cast from " + vec(ray.origin) + " along " + vec(ray.direction) + " to " +
-              describe(s) + ", max_t=" + num(double(max_t)) + ": " + describe_result(c) + "; raycast: " +
-              (h ? "hit t=" + num(double(h->t)) : std::string("miss"));
+              describe(s) + ", max_t=" + num(double(max_t)) + ": " + describe_result(c) +
+              "; raycast: " + (h ? "hit t=" + num(double(h->t)) : std::string("miss"));
   if (c.outcome == CastOutcome::IterationLimit || c.outcome == CastOutcome::InvalidInput) return v;
   if (c.hit() == bool(h)) {
     // Both start inside: both at t = 0.
-    if (c.hit() && (c.t == T(0)) != (h->t == T(0)) && oracle::contains(s, ray.origin)) fail(v, "both at t = 0 from inside", "");
+    if (c.hit() && (c.t == T(0)) != (h->t == T(0)) && oracle::contains(s, ray.origin))
+      fail(v, "both at t = 0 from inside", "");
     return v;
   }
   // They differ only for a ray passing within the larger tolerance of the shape.
   const double pad = std::max(eps, delta);
   const bool near = oracle::meets_during(p, ray.direction, s, zero, 0.0, double(max_t), pad);
-  if (!near) fail(v, "the cast and the ray agree on hit or miss", c.hit() ? "cast hit, ray missed" : "ray hit, cast missed");
+  if (!near)
+    fail(v, "the cast and the ray agree on hit or miss", c.hit() ? "cast hit, ray missed" : "ray hit, cast missed");
   v.disagreement = near;
   return v;
 }
@@ -333,11 +354,11 @@ Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const 
   return v;
 }
 
-#define COLLIDE_CAST_LAWS(T)                                                                                  \
-  template Verdict cast_law<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                        \
-  template Verdict cast_symmetry<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                   \
+#define COLLIDE_CAST_LAWS(T)                                                                                   \
+  template Verdict cast_law<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                         \
+  template Verdict cast_symmetry<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                    \
   template Verdict cast_translation<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&, const Vec2<T>&); \
-  template Verdict cast_raycast<T>(const Shape<T>&, const Ray<T>&, T);                                   \
+  template Verdict cast_raycast<T>(const Shape<T>&, const Ray<T>&, T);                                         \
   template Verdict toi_law<T>(const Shape<T>&, const Sweep<T>&, const Shape<T>&, const Sweep<T>&, T,           \
                               std::span<const double>);
 COLLIDE_CAST_LAWS(float)

@@ -153,9 +153,8 @@ std::array<Vec2c, 2> surface_points(const Contact<T>& c, int i) {
 /// The primitive pair of point i (children named by its id); false, with the law broken, when an
 /// id names a child that does not exist.
 template <Scalar T>
-bool point_pair(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i,
-                const Placed<T>*& pa, const Placed<T>*& pb, std::vector<Placed<T>>& ka,
-                std::vector<Placed<T>>& kb) {
+bool point_pair(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i, const Placed<T>*& pa,
+                const Placed<T>*& pb, std::vector<Placed<T>>& ka, std::vector<Placed<T>>& kb) {
   ka = detail::placed_primitives_of(a);
   kb = detail::placed_primitives_of(b);
   const FeatureId& id = c.ids[std::size_t(i)];
@@ -240,11 +239,11 @@ bool check_point_features(Judgement& j, const Shape<T>& a, const Shape<T>& b, co
     double d = std::numeric_limits<double>::infinity();
     for (const auto& seg : f.segments) d = std::min(d, distance_to_segment(x[std::size_t(k)], seg));
     if (!(d <= f.radius + bound)) {
-      return !j.broken("point " + std::to_string(i) + "'s " + (k == 0 ? "a" : "b") + " feature (" +
-                           (kinds[k] == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(index[k]) +
-                           ") within radius + " + num(bound) + " of its surface point",
-                       "distance " + num(d) + " from " + vec(Vec2<double>(x[std::size_t(k)])) + " (radius " +
-                           num(f.radius) + ")");
+      return !j.broken(
+          "point " + std::to_string(i) + "'s " + (k == 0 ? "a" : "b") + " feature (" +
+              (kinds[k] == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(index[k]) + ") within radius + " +
+              num(bound) + " of its surface point",
+          "distance " + num(d) + " from " + vec(Vec2<double>(x[std::size_t(k)])) + " (radius " + num(f.radius) + ")");
     }
   }
   return true;
@@ -266,8 +265,8 @@ std::string ids_text(const Contact<T>& c) {
     const FeatureId& id = c.ids[std::size_t(i)];
     out += (i ? ", " : "") + std::string("[") + std::to_string(id.child_a) + ":" +
            (id.kind_a == FeatureKind::Edge ? "e" : "v") + std::to_string(id.index_a) + " " +
-           std::to_string(id.child_b) + ":" + (id.kind_b == FeatureKind::Edge ? "e" : "v") + std::to_string(id.index_b) +
-           "]";
+           std::to_string(id.child_b) + ":" + (id.kind_b == FeatureKind::Edge ? "e" : "v") +
+           std::to_string(id.index_b) + "]";
   }
   return out;
 }
@@ -334,8 +333,7 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     if (id_keys(*c) != id_keys(*cp)) {
-      j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself",
-               ids_text(*c));
+      j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself", ids_text(*c));
     }
   });
 }
@@ -344,7 +342,9 @@ template <Scalar T>
 Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
   return judged(a, b, [&](Judgement& j) {
     // A speculative distance of about a tenth of the pair's size, a power of two (exact in T).
-    const auto box = [](const Aabb<T>& x) { return std::max(double(x.max().x() - x.min().x()), double(x.max().y() - x.min().y())); };
+    const auto box = [](const Aabb<T>& x) {
+      return std::max(double(x.max().x() - x.min().x()), double(x.max().y() - x.min().y()));
+    };
     const double size = std::max(box(bounds(a)), box(bounds(b)));
     const T spec = static_cast<T>(std::ldexp(1.0, std::ilogb(std::max(size, 1e-30)) - 3));
     const bool over = overlaps(a, b);
@@ -405,7 +405,7 @@ Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
   });
 }
 
-#define COLLIDE_MANIFOLD_LAWS_INSTANTIATE(T)                                    \
+#define COLLIDE_MANIFOLD_LAWS_INSTANTIATE(T)                                 \
   template Verdict manifold_separation<T>(const Shape<T>&, const Shape<T>&); \
   template Verdict manifold_ids<T>(const Shape<T>&, const Shape<T>&);        \
   template Verdict manifold_speculative<T>(const Shape<T>&, const Shape<T>&);

@@ -158,8 +158,8 @@ Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t) {
     const Shape<T>& b2 = mb.value();
     const bool before = overlaps(a, b), after = overlaps(a2, b2);
     const bool exact = detail::exact_move(a, a2, t) && detail::exact_move(b, b2, t);
-    v.account = std::string(exact ? "exact" : "rounded") + " move by " + vec(t) + ": overlaps " + yes(before) +
-                " -> " + yes(after);
+    v.account = std::string(exact ? "exact" : "rounded") + " move by " + vec(t) + ": overlaps " + yes(before) + " -> " +
+                yes(after);
     if (exact) {
       if (before != after)
         fail(v, "the same answer under an exact move", "overlaps " + yes(before) + " -> " + yes(after),
@@ -235,15 +235,15 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
         return;
       }
       if (!oracle::separates(a, b, push)) {
-        fail(v, "exact a + push does not overlap b", "still overlapping",
-             "push " + vec(push) + "; " + pair_text(a, b));
+        fail(v, "exact a + push does not overlap b", "still overlapping", "push " + vec(push) + "; " + pair_text(a, b));
         return;
       }
-      moved_note = std::string("; a + push not representable in T (") + moved.error().what() + "), exact a + push separates";
+      moved_note =
+          std::string("; a + push not representable in T (") + moved.error().what() + "), exact a + push separates";
     } else if (oracle::overlaps(moved.value(), b)) {
       // Judge the shape translated() really produced (rounded to T), against b.
-      fail(v, "a + push does not overlap b", "still overlapping, signed distance ~" +
-                                                   num(oracle::approx_signed_distance(moved.value(), b)),
+      fail(v, "a + push does not overlap b",
+           "still overlapping, signed distance ~" + num(oracle::approx_signed_distance(moved.value(), b)),
            "push " + vec(push) + "; moved a = " + describe(moved.value()) + "; " + pair_text(a, b));
       return;
     }
@@ -262,14 +262,15 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     // within the margin's own term), so a margin grown from the other shape's extent fails.
     if (moved && oracle::compare_distance(moved.value(), b, 2 * (margin + slack)) > 0) {
       fail(v, "gap left <= 2 (resolve_margin " + num(margin) + " + slack " + num(slack) + ")",
-           "gap ~" + num(oracle::approx_signed_distance(moved.value(), b)), "push " + vec(push) + "; " + pair_text(a, b));
+           "gap ~" + num(oracle::approx_signed_distance(moved.value(), b)),
+           "push " + vec(push) + "; " + pair_text(a, b));
       return;
     }
     const double lower = len - margin - slack;
     if (lower > 0 && oracle::compare_depth(a, b, lower) < 0) {
       fail(v, "|v| <= exact depth + resolve_margin (" + num(margin) + ") + slack (" + num(slack) + ")",
-           "|v| = " + num(len) + ", exact depth < " + num(lower) + " (~" +
-               num(-oracle::approx_signed_distance(a, b)) + ")",
+           "|v| = " + num(len) + ", exact depth < " + num(lower) + " (~" + num(-oracle::approx_signed_distance(a, b)) +
+               ")",
            "push " + vec(push) + "; " + pair_text(a, b));
     }
   });
@@ -303,7 +304,8 @@ Verdict hierarchy(const Shape<T>& compound, const Shape<T>& x) {
     v.account += std::string("; boxes ") + (boxes_meet ? "meet" : "miss");
     if (boxes_meet) return;
     for (const auto& child : children) {
-      if (overlaps(child.shape, child.transform, x, identity) || oracle::overlaps(oracle::placed(child.shape, child.transform), x)) {
+      if (overlaps(child.shape, child.transform, x, identity) ||
+          oracle::overlaps(oracle::placed(child.shape, child.transform), x)) {
         fail(v, "no child overlaps x when the compound's box misses x's box",
              "child " + describe(child.shape, child.transform) + " overlaps x", pair_text(compound, x));
         return;
@@ -319,9 +321,9 @@ namespace {
 /// for a kind without one.
 template <Scalar T>
 struct Form {
-  std::string name;                ///< which representation
-  Shape<T> shape;                  ///< its stored values
-  Transform<T> transform{};        ///< where it is placed (a compound's only child: its transform)
+  std::string name;          ///< which representation
+  Shape<T> shape;            ///< its stored values
+  Transform<T> transform{};  ///< where it is placed (a compound's only child: its transform)
 };
 template <Scalar T>
 struct Forms : std::vector<Form<T>> {
@@ -340,8 +342,7 @@ void add_forms(const Aabb<T>& box, Forms<T>& out, std::string& skipped) {
     skipped += " polygon (degenerate box)";
   }
   const Vec2<T> c = (lo + hi) / T(2), h = (hi - lo) / T(2);
-  const bool exact = c - h == lo && c + h == hi &&
-                     detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
+  const bool exact = c - h == lo && c + h == hi && detail::exact_sum(double(c.x()), double(h.x()), double(hi.x())) &&
                      detail::exact_sum(double(c.y()), double(h.y()), double(hi.y())) &&
                      detail::exact_sum(double(c.x()), -double(h.x()), double(lo.x())) &&
                      detail::exact_sum(double(c.y()), -double(h.y()), double(lo.y()));
@@ -417,7 +418,8 @@ void add_forms(const Obb<T>& obb, Forms<T>& out, std::string& skipped) {
   const Vec2<T> u = obb.axis();
   const auto swapped = Obb<T>::make_with_axis(c, Vec2<T>(h.y(), h.x()), Vec2<T>(-u.y(), u.x()));
   const auto canonical = Obb<T>::make_with_axis(c, h, u);
-  if (swapped && canonical && swapped.value().axis() == Vec2<T>(-canonical.value().axis().y(), canonical.value().axis().x()) &&
+  if (swapped && canonical &&
+      swapped.value().axis() == Vec2<T>(-canonical.value().axis().y(), canonical.value().axis().x()) &&
       canonical.value().axis() == u) {
     out.emplace_back("obb with axes exchanged", swapped.value());
   } else {
@@ -599,8 +601,8 @@ Verdict touching(const Shape<T>& a, const Shape<T>& b) {
     if (ab == exact && ba == exact) return;
     if (oracle::within_band(a, b, tol)) {
       v.disagreement = true;
-      v.account += "; within the band " + num(tol) + " (signed distance ~" +
-                   num(oracle::approx_signed_distance(a, b)) + "): allowed";
+      v.account += "; within the band " + num(tol) + " (signed distance ~" + num(oracle::approx_signed_distance(a, b)) +
+                   "): allowed";
       return;
     }
     fail(v, "overlaps " + yes(exact) + " both ways (signed distance beyond the band " + num(tol) + ")",
@@ -625,10 +627,10 @@ Verdict distance_law(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     // Plus the rounding of the result to T (absolute near T's subnormals).
-    const double bound = 4 * rounding_tolerance(a, b) + 4 * detail::eps<T>() * d +
-                         2 * double(std::numeric_limits<T>::denorm_min());
-    const bool too_far = oracle::compare_distance(a, b, d - bound) < 0;    // gap < d - bound
-    const bool too_near = oracle::compare_distance(a, b, d + bound) > 0;   // gap > d + bound
+    const double bound =
+        4 * rounding_tolerance(a, b) + 4 * detail::eps<T>() * d + 2 * double(std::numeric_limits<T>::denorm_min());
+    const bool too_far = oracle::compare_distance(a, b, d - bound) < 0;   // gap < d - bound
+    const bool too_near = oracle::compare_distance(a, b, d + bound) > 0;  // gap > d + bound
     if (too_far || too_near) {
       fail(v, "distance within " + num(bound) + " of the exact gap",
            "distance " + num(d) + ", exact ~" + num(oracle::approx_signed_distance(a, b)), pair_text(a, b));
@@ -636,16 +638,16 @@ Verdict distance_law(const Shape<T>& a, const Shape<T>& b) {
   });
 }
 
-#define COLLIDE_LAWS_INSTANTIATE(T)                                                       \
-  template Verdict agreement<T>(const Shape<T>&, const Shape<T>&);                       \
-  template Verdict symmetry<T>(const Shape<T>&, const Shape<T>&);                        \
-  template Verdict translation<T>(const Shape<T>&, const Shape<T>&, const Vec2<T>&);     \
-  template Verdict rotation<T>(const Shape<T>&, const Shape<T>&, int, bool);             \
-  template Verdict resolution<T>(const Shape<T>&, const Shape<T>&);                      \
-  template Verdict hierarchy<T>(const Shape<T>&, const Shape<T>&);                       \
-  template Verdict representation<T>(const Shape<T>&, const Shape<T>&);                  \
-  template Verdict contact_law<T>(const Shape<T>&, const Shape<T>&);                     \
-  template Verdict distance_law<T>(const Shape<T>&, const Shape<T>&);                    \
+#define COLLIDE_LAWS_INSTANTIATE(T)                                                  \
+  template Verdict agreement<T>(const Shape<T>&, const Shape<T>&);                   \
+  template Verdict symmetry<T>(const Shape<T>&, const Shape<T>&);                    \
+  template Verdict translation<T>(const Shape<T>&, const Shape<T>&, const Vec2<T>&); \
+  template Verdict rotation<T>(const Shape<T>&, const Shape<T>&, int, bool);         \
+  template Verdict resolution<T>(const Shape<T>&, const Shape<T>&);                  \
+  template Verdict hierarchy<T>(const Shape<T>&, const Shape<T>&);                   \
+  template Verdict representation<T>(const Shape<T>&, const Shape<T>&);              \
+  template Verdict contact_law<T>(const Shape<T>&, const Shape<T>&);                 \
+  template Verdict distance_law<T>(const Shape<T>&, const Shape<T>&);                \
   template Verdict touching<T>(const Shape<T>&, const Shape<T>&);
 
 COLLIDE_LAWS_INSTANTIATE(float)

@@ -58,8 +58,10 @@ Built build(Make&& make, Ctor&& ctor) {
     ctor();
     if (!out.ok) out.mismatch = "constructor accepted what make() rejected";
   } catch (const ShapeError& e) {
-    if (out.ok) out.mismatch = std::string("constructor threw ") + e.what() + " where make() accepted";
-    else if (e.code() != out.code) out.mismatch = std::string("constructor threw ") + e.what();
+    if (out.ok)
+      out.mismatch = std::string("constructor threw ") + e.what() + " where make() accepted";
+    else if (e.code() != out.code)
+      out.mismatch = std::string("constructor threw ") + e.what();
   }
   return out;
 }
@@ -186,7 +188,8 @@ Verdict rejection(ShapeKind kind, std::span<const T> all_values) {
   }
   const std::optional<std::pair<Error, long>> ve = value_error<T>(x);
   if (ve) {
-    if (b.ok || b.code != ve->first) return fail(std::string(name(ve->first)) + " for value " + std::to_string(ve->second)), v;
+    if (b.ok || b.code != ve->first)
+      return fail(std::string(name(ve->first)) + " for value " + std::to_string(ve->second)), v;
     const long want = ve->second;
     if (b.index != want) return fail(std::string(name(ve->first)) + " at index " + std::to_string(want)), v;
     return v;

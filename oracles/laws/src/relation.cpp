@@ -8,10 +8,14 @@ using detail::placed_primitives_of;
 
 std::string_view name(Relation r) noexcept {
   switch (r) {
-    case Relation::Separated: return "separated";
-    case Relation::Touching: return "touching";
-    case Relation::Overlapping: return "overlapping";
-    case Relation::Contained: return "contained";
+    case Relation::Separated:
+      return "separated";
+    case Relation::Touching:
+      return "touching";
+    case Relation::Overlapping:
+      return "overlapping";
+    case Relation::Contained:
+      return "contained";
   }
   return "unknown";
 }

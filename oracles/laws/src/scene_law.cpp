@@ -60,16 +60,16 @@ Verdict scene(const Shape<T>& group) {
     for (std::size_t i = 0; i < n; ++i) {
       for (std::size_t j = i + 1; j < n; ++j) {
         const Aabb<T> bi = bounds(shapes[i]), bj = bounds(shapes[j]);
-        const bool meet = !(bi.max().x() < bj.min().x() || bj.max().x() < bi.min().x() ||
-                            bi.max().y() < bj.min().y() || bj.max().y() < bi.min().y());
+        const bool meet = !(bi.max().x() < bj.min().x() || bj.max().x() < bi.min().x() || bi.max().y() < bj.min().y() ||
+                            bj.max().y() < bi.min().y());
         if (meet && (i < moved.size() || j < moved.size()))
           expect.push_back(ids[i].index < ids[j].index ? broadphase::ProxyPair{ids[i], ids[j]}
                                                        : broadphase::ProxyPair{ids[j], ids[i]});
       }
     }
     std::sort(expect.begin(), expect.end());
-    const auto involving = broadphase::pairs_involving(tree, std::span<const broadphase::ProxyId>(moved),
-                                                       broadphase::PairOrder::Sorted);
+    const auto involving =
+        broadphase::pairs_involving(tree, std::span<const broadphase::ProxyId>(moved), broadphase::PairOrder::Sorted);
     if (involving != expect) {
       fail(std::to_string(expect.size()) + " box pairs involving the first " + std::to_string(moved.size()) +
                " proxies, each once",

@@ -78,8 +78,10 @@ std::optional<Primitive<T>> eroded(const Primitive<T>& p, double e) {
           Vec2<T> lo(T(double(s.min().x()) + e), T(double(s.min().y()) + e));
           Vec2<T> hi(T(double(s.max().x()) - e), T(double(s.max().y()) - e));
           for (int k = 0; k < 2; ++k) {
-            if (double(lo[k]) < double(s.min()[k]) + e) lo[k] = std::nextafter(lo[k], std::numeric_limits<T>::infinity());
-            if (double(hi[k]) > double(s.max()[k]) - e) hi[k] = std::nextafter(hi[k], -std::numeric_limits<T>::infinity());
+            if (double(lo[k]) < double(s.min()[k]) + e)
+              lo[k] = std::nextafter(lo[k], std::numeric_limits<T>::infinity());
+            if (double(hi[k]) > double(s.max()[k]) - e)
+              hi[k] = std::nextafter(hi[k], -std::numeric_limits<T>::infinity());
           }
           auto r = Aabb<T>::make(lo, hi);
           if (!r) return std::nullopt;
@@ -157,8 +159,9 @@ Verdict contains_law(const Shape<T>& s, const Vec2<T>& p) {
         const double tol = contains_tolerance(s, p);
         bool allowed = false;
         for (const auto& child : detail::placed_primitives_of(s)) {
-          const bool rounded = !child.transform.is_identity() || (!std::holds_alternative<Aabb<T>>(child.shape) &&
-                                                                  !std::holds_alternative<ConvexPolygon<T>>(child.shape));
+          const bool rounded =
+              !child.transform.is_identity() ||
+              (!std::holds_alternative<Aabb<T>>(child.shape) && !std::holds_alternative<ConvexPolygon<T>>(child.shape));
           allowed = allowed || (rounded && detail::near_boundary(oracle::placed(child.shape, child.transform), q, tol));
         }
         v.disagreement = true;

@@ -29,7 +29,9 @@ inline std::string num(double v) {
 
 using ::collide::laws::codec_detail::hex;
 
-inline std::string yes(bool b) { return b ? "true" : "false"; }
+inline std::string yes(bool b) {
+  return b ? "true" : "false";
+}
 
 template <Scalar T>
 std::string vec(const Vec2<T>& v) {

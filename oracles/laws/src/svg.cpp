@@ -17,8 +17,8 @@ namespace {
 constexpr double kSize = 600;
 constexpr double kMargin = 50;
 constexpr double kLineHeight = 14;
-constexpr std::size_t kWrap = 96;      // characters per caption line (11 px monospace in 600 px)
-constexpr double kMinVisible = 3;      // px: a shape drawn smaller gets a marker
+constexpr std::size_t kWrap = 96;  // characters per caption line (11 px monospace in 600 px)
+constexpr double kMinVisible = 3;  // px: a shape drawn smaller gets a marker
 
 /// World -> picture: fit the world box into the square, y up.
 struct View {
@@ -41,11 +41,21 @@ std::string escape(const std::string& s) {
   std::string out;
   for (char ch : s) {
     switch (ch) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '\'': out += "&apos;"; break;
-      case '"': out += "&quot;"; break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
       default:
         if (static_cast<unsigned char>(ch) >= 0x20 || ch == '\t') out += ch;
     }
@@ -111,7 +121,9 @@ void marker(std::ostream& out, const View& v, const Vec2c& p, const Style& st) {
 template <Scalar T>
 bool draw_primitive(std::ostream& out, const View& v, const Primitive<T>& p, const Style& st) {
   const Aabb<T> box = bounds(p);
-  const double size = std::max(double(box.max().x()) - double(box.min().x()), double(box.max().y()) - double(box.min().y())) * v.scale();
+  const double size =
+      std::max(double(box.max().x()) - double(box.min().x()), double(box.max().y()) - double(box.min().y())) *
+      v.scale();
   std::visit(
       [&](const auto& s) {
         using S = std::remove_cvref_t<decltype(s)>;
@@ -169,8 +181,8 @@ void draw_box(std::ostream& out, const View& v, const Aabb<T>& b, const std::str
 }
 
 void arrow(std::ostream& out, const View& v, const Vec2c& from, const Vec2c& to, const std::string& colour) {
-  out << "<line x1='" << f(v.px(from.x())) << "' y1='" << f(v.py(from.y())) << "' x2='" << f(v.px(to.x()))
-      << "' y2='" << f(v.py(to.y())) << "' stroke='" << colour << "' stroke-width='2' marker-end='url(#head)'/>\n";
+  out << "<line x1='" << f(v.px(from.x())) << "' y1='" << f(v.py(from.y())) << "' x2='" << f(v.px(to.x())) << "' y2='"
+      << f(v.py(to.y())) << "' stroke='" << colour << "' stroke-width='2' marker-end='url(#head)'/>\n";
 }
 
 void text(std::ostream& out, double x, double y, const std::string& s, const std::string& anchor = "start") {
@@ -278,7 +290,9 @@ void draw(std::ostream& out, const Case& c) {
       push = std::pair{mid, Vec2c(mid + widen(va) * c.max_t)};
       notes.push_back("a moves at (" + detail::num(c.vax) + ", " + detail::num(c.vay) + "), b at (" +
                       detail::num(c.vbx) + ", " + detail::num(c.vby) + "); shape_cast: " +
-                      std::string(r.outcome == CastOutcome::Hit ? "hit" : r.outcome == CastOutcome::Miss ? "miss" : "no answer") +
+                      std::string(r.outcome == CastOutcome::Hit    ? "hit"
+                                  : r.outcome == CastOutcome::Miss ? "miss"
+                                                                   : "no answer") +
                       " at t = " + detail::num(t) + ", both drawn there dashed green");
     }
     if (c.law == Law::Raycast || c.law == Law::PlacedShape || c.law == Law::CastRaycast) {
@@ -320,7 +334,8 @@ void draw(std::ostream& out, const Case& c) {
   if (point) marker(body, v, *point, Style{"#222", 0, ""});
   if (tiny) notes.push_back("ring and cross: a shape smaller than " + detail::num(kMinVisible) + " px, drawn enlarged");
 
-  std::vector<std::string> lines = {std::string(name(c.law)) + "  " + pair_name(c) + "  " + c.scalar + "  (a blue, b red)"};
+  std::vector<std::string> lines = {std::string(name(c.law)) + "  " + pair_name(c) + "  " + c.scalar +
+                                    "  (a blue, b red)"};
   if (a) lines.push_back("a = " + detail::describe(*a));
   if (b) lines.push_back("b = " + detail::describe(*b));
   lines.push_back("expected: " + c.expected);

@@ -73,7 +73,6 @@ inline Relation placed_relation(const oracle::Placed& a, const oracle::Placed& b
   return oracle::within_band(a, b, 0.0) ? Relation::Touching : Relation::Overlapping;
 }
 
-
 /// Every mapped coordinate of s's stored positions under x is exact in U (double: the images; T:
 /// the world shape a factory builds). Compounds with child transforms never count as exact. An
 /// AABB turned (not only moved) is imaged as a box from its centre and half extents, which must
@@ -214,7 +213,8 @@ Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<
       j.v.disagreement = true;
       const double band = overlap_tolerance(a, xa, b, xb);
       j.note("differs from the exact images within band " + num(band));
-      j.require(oracle::within_band(pa, pb, band), "the oracle's answer " + yes(exact) + " outside the band " + num(band),
+      j.require(oracle::within_band(pa, pb, band),
+                "the oracle's answer " + yes(exact) + " outside the band " + num(band),
                 yes(got) + ", signed distance ~" + num(oracle::approx_signed_distance(pa, pb)));
     }
   });
@@ -236,13 +236,15 @@ Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>
         j.require(oracle::compare_depth(pa, pb, depth + bound) <= 0, "exact depth <= depth + " + num(bound),
                   "exact depth ~" + num(-oracle::approx_signed_distance(pa, pb)));
         j.require(depth - bound <= 0 || oracle::compare_depth(pa, pb, depth - bound) >= 0,
-                  "exact depth >= depth - " + num(bound), "exact depth ~" + num(-oracle::approx_signed_distance(pa, pb)));
+                  "exact depth >= depth - " + num(bound),
+                  "exact depth ~" + num(-oracle::approx_signed_distance(pa, pb)));
         const Vec2<double> away = -n * (depth + 2 * bound);
         j.require(oracle::separates(pa, pb, away), "a moved by -normal (depth + 2 bounds) apart", "still overlapping");
       }
       for (int i = 0; i < c->count; ++i) {
         const oracle::Placed pt = point_input(widen(c->points[std::size_t(i)]));
-        const double reach = depth + bound + 4 * detail::eps<T>() * widen(c->points[std::size_t(i)]).cwiseAbs().maxCoeff();
+        const double reach =
+            depth + bound + 4 * detail::eps<T>() * widen(c->points[std::size_t(i)]).cwiseAbs().maxCoeff();
         j.require(oracle::compare_distance(pa, pt, reach) <= 0 && oracle::compare_distance(pb, pt, reach) <= 0,
                   "contact point within depth + bound of both shapes", vec(c->points[std::size_t(i)]));
       }
@@ -295,57 +297,57 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
 
 template <Scalar T>
 Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const Ray<T>& ray, T max_t) {
-  return judged("s = " + placed_text(s, x) + "; p = " + vec(p) + "; ray " + vec(ray.origin) + " + t " +
-                    vec(ray.direction) + ", max_t " + num(max_t),
-                [&](Judgement& j) {
-                  const oracle::Placed ps = oracle::placed(s, x);
-                  const double tol = transform_tolerance(s, x);
-                  // Bounds contain the exact image.
-                  const Aabb<T> box = bounds(s, x);
-                  j.require(oracle::inside_box(ps, box), "bounds(s, x) containing the exact image",
-                            vec(box.min()) + " .. " + vec(box.max()));
-                  // Containment, exact outside the band.
-                  const bool in = contains(s, x, p);
-                  if (!p.allFinite()) {
-                    j.require(!in, "no NaN or infinite point contained", "contained");
-                    return;
-                  }
-                  const bool exact_in = oracle::contains(ps, p);
-                  j.v.relation = in ? Relation::Contained : Relation::Separated;
-                  if (in != exact_in) {
-                    j.v.disagreement = true;
-                    j.require(oracle::within_band(ps, point_input(widen(p)), tol),
-                              "contains " + yes(exact_in) + " outside the band " + num(tol), yes(in));
-                  }
-                  if (x.is_identity()) {
-                    const Aabb<T> world = bounds(s);
-                    j.require(in == contains(s, p) && box.min() == world.min() && box.max() == world.max(), "the world-space answers for the identity",
-                              "a difference");
-                  }
-                  // Ray cast: a hit lies on the image within the bound; a miss passes no deeper.
-                  const double delta = raycast_tolerance(s, x, Ray<T>{ray.origin, ray.direction});
-                  const auto hit = raycast(s, x, Ray<T>{ray.origin, ray.direction}, max_t);
-                  const Vec2c o = widen(ray.origin), d = widen(ray.direction);
-                  if (hit) {
-                    const double t = hit->t;
-                    j.note("hit t " + num(t));
-                    j.require(t >= 0 && t <= double(max_t), "0 <= t <= max_t", num(t));
-                    const Vec2c q = widen(hit->point);
-                    j.require(oracle::compare_distance(ps, point_input(q), delta) <= 0,
-                              "hit point within " + num(delta) + " of the shape", vec(hit->point));
-                    const double off = (o + d * t - q).norm();
-                    j.require(off <= delta + (4 * detail::eps<T>() * t + 0x1p-1070) * d.norm() + 4 * detail::eps<T>() * q.norm(),
-                              "hit point on the ray", "off by " + num(off));
-                  } else if (d.allFinite() && (d.x() != 0 || d.y() != 0)) {
-                    const Vec2c end = o + d * double(max_t);
-                    if (end.allFinite() && end.cwiseAbs().maxCoeff() < 0x1p120 &&
-                        oracle::segment_meets(ps, o, end)) {
-                      const auto seg = collide::detail::ShapeAccess::capsule<double>(o, end, 0.0);
-                      j.require(oracle::within_band(ps, oracle::Placed(Shape<double>(seg)), delta),
-                                "a miss only within " + num(delta) + " of the shape", "no hit, the segment meets it");
-                    }
-                  }
-                });
+  return judged(
+      "s = " + placed_text(s, x) + "; p = " + vec(p) + "; ray " + vec(ray.origin) + " + t " + vec(ray.direction) +
+          ", max_t " + num(max_t),
+      [&](Judgement& j) {
+        const oracle::Placed ps = oracle::placed(s, x);
+        const double tol = transform_tolerance(s, x);
+        // Bounds contain the exact image.
+        const Aabb<T> box = bounds(s, x);
+        j.require(oracle::inside_box(ps, box), "bounds(s, x) containing the exact image",
+                  vec(box.min()) + " .. " + vec(box.max()));
+        // Containment, exact outside the band.
+        const bool in = contains(s, x, p);
+        if (!p.allFinite()) {
+          j.require(!in, "no NaN or infinite point contained", "contained");
+          return;
+        }
+        const bool exact_in = oracle::contains(ps, p);
+        j.v.relation = in ? Relation::Contained : Relation::Separated;
+        if (in != exact_in) {
+          j.v.disagreement = true;
+          j.require(oracle::within_band(ps, point_input(widen(p)), tol),
+                    "contains " + yes(exact_in) + " outside the band " + num(tol), yes(in));
+        }
+        if (x.is_identity()) {
+          const Aabb<T> world = bounds(s);
+          j.require(in == contains(s, p) && box.min() == world.min() && box.max() == world.max(),
+                    "the world-space answers for the identity", "a difference");
+        }
+        // Ray cast: a hit lies on the image within the bound; a miss passes no deeper.
+        const double delta = raycast_tolerance(s, x, Ray<T>{ray.origin, ray.direction});
+        const auto hit = raycast(s, x, Ray<T>{ray.origin, ray.direction}, max_t);
+        const Vec2c o = widen(ray.origin), d = widen(ray.direction);
+        if (hit) {
+          const double t = hit->t;
+          j.note("hit t " + num(t));
+          j.require(t >= 0 && t <= double(max_t), "0 <= t <= max_t", num(t));
+          const Vec2c q = widen(hit->point);
+          j.require(oracle::compare_distance(ps, point_input(q), delta) <= 0,
+                    "hit point within " + num(delta) + " of the shape", vec(hit->point));
+          const double off = (o + d * t - q).norm();
+          j.require(off <= delta + (4 * detail::eps<T>() * t + 0x1p-1070) * d.norm() + 4 * detail::eps<T>() * q.norm(),
+                    "hit point on the ray", "off by " + num(off));
+        } else if (d.allFinite() && (d.x() != 0 || d.y() != 0)) {
+          const Vec2c end = o + d * double(max_t);
+          if (end.allFinite() && end.cwiseAbs().maxCoeff() < 0x1p120 && oracle::segment_meets(ps, o, end)) {
+            const auto seg = collide::detail::ShapeAccess::capsule<double>(o, end, 0.0);
+            j.require(oracle::within_band(ps, oracle::Placed(Shape<double>(seg)), delta),
+                      "a miss only within " + num(delta) + " of the shape", "no hit, the segment meets it");
+          }
+        }
+      });
 }
 
 template <Scalar T>
@@ -407,7 +409,8 @@ Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& o
     }
     // The built shape differs from the exact image by T's rounding of its values.
     const double sw = collide::detail::box_scale(bounds(*w));
-    const double band = transform_tolerance(s, x) + 8 * detail::eps<T>() * (sw + 2 * collide::detail::box_scale(bounds(s)));
+    const double band =
+        transform_tolerance(s, x) + 8 * detail::eps<T>() * (sw + 2 * collide::detail::box_scale(bounds(s)));
     if (placed != built) {
       j.v.disagreement = true;
       j.require(oracle::within_band(ps, oracle::as_exact_input(other), band),
@@ -438,7 +441,8 @@ Verdict transform_rejection(std::span<const T> values) {
       }
       return std::nullopt;
     };
-    const auto check = [&](const Expected<Transform<T>>& e, std::optional<std::pair<Error, long>> want, const char* what) {
+    const auto check = [&](const Expected<Transform<T>>& e, std::optional<std::pair<Error, long>> want,
+                           const char* what) {
       if (want) {
         j.require(!e && e.error().code() == want->first && e.error().index() == want->second,
                   std::string(what) + ": " + std::string(name(want->first)) + " at " + std::to_string(want->second),
@@ -469,7 +473,8 @@ Verdict transform_rejection(std::span<const T> values) {
         static_cast<void>(std::frexp(rc.cwiseAbs().maxCoeff(), &exp2));
         const Vec2c rs(std::ldexp(rc.x(), -exp2), std::ldexp(rc.y(), -exp2));
         const Vec2c unit = rs / std::hypot(rs.x(), rs.y());
-        j.require((q - unit).cwiseAbs().maxCoeff() <= 2 * detail::eps<T>() && std::fabs(q.squaredNorm() - 1) <= 4 * detail::eps<T>(),
+        j.require((q - unit).cwiseAbs().maxCoeff() <= 2 * detail::eps<T>() &&
+                      std::fabs(q.squaredNorm() - 1) <= 4 * detail::eps<T>(),
                   "the rotation normalised: " + vec(unit), vec(er->rotation()));
       }
       // Moving it: a named error when the position leaves the range, else the rotation kept.
@@ -483,14 +488,13 @@ Verdict transform_rejection(std::span<const T> values) {
   });
 }
 
-#define COLLIDE_TRANSFORM_LAWS_INSTANTIATE(T)                                                                      \
-  template Verdict placed_agreement<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&); \
-  template Verdict placed_outputs<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);   \
-  template Verdict placed_resolution<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&,                      \
-                                        const Transform<T>&);                                                       \
-  template Verdict placed_shape<T>(const Shape<T>&, const Transform<T>&, const Vec2<T>&, const Ray<T>&, T);    \
-  template Verdict placed_covariance<T>(const Shape<T>&, const Shape<T>&, const Transform<T>&);                     \
-  template Verdict placed_image<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&);                          \
+#define COLLIDE_TRANSFORM_LAWS_INSTANTIATE(T)                                                                        \
+  template Verdict placed_agreement<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);  \
+  template Verdict placed_outputs<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);    \
+  template Verdict placed_resolution<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&); \
+  template Verdict placed_shape<T>(const Shape<T>&, const Transform<T>&, const Vec2<T>&, const Ray<T>&, T);          \
+  template Verdict placed_covariance<T>(const Shape<T>&, const Shape<T>&, const Transform<T>&);                      \
+  template Verdict placed_image<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&);                           \
   template Verdict transform_rejection<T>(std::span<const T>);
 
 COLLIDE_TRANSFORM_LAWS_INSTANTIATE(float)

@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
     out = {{"kinds", kinds_json()},
            {"transform",
             {{"fields", fields_json(laws::TransformCodec::fields)},
-             {"identity", std::vector<double>(laws::TransformCodec::identity.begin(), laws::TransformCodec::identity.end())}}},
+             {"identity",
+              std::vector<double>(laws::TransformCodec::identity.begin(), laws::TransformCodec::identity.end())}}},
            {"laws", laws_json()}};
   }
   std::cout << out.dump(1) << '\n';

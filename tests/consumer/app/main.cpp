@@ -67,7 +67,8 @@ int main() {
   world.query_point(V(0, 0), [&](collide::broadphase::ProxyId id) { at_origin += id == first ? 1 : 100; });
   check(at_origin == 1, "the point (0, 0) lies in the first body only");
   const auto hit = world.raycast(collide::Ray<double>{V(-10, 0), V(1, 0)}, 100.0);
-  check(hit.has_value() && hit->body == first && std::fabs(hit->hit.t - 9) < 1e-12, "a ray along +x meets the first body at t = 9");
+  check(hit.has_value() && hit->body == first && std::fabs(hit->hit.t - 9) < 1e-12,
+        "a ray along +x meets the first body at t = 9");
 
   // The three structures give the same pairs.
   collide::broadphase::DynamicTree<float> tree;
@@ -80,7 +81,8 @@ int main() {
     grid.add(box, std::uint64_t(i));
   }
   const auto order = collide::broadphase::PairOrder::Sorted;
-  check(tree.pairs(order) == sweep.pairs(order) && tree.pairs(order) == grid.pairs(order) && tree.pairs(order).size() == 19,
+  check(tree.pairs(order) == sweep.pairs(order) && tree.pairs(order) == grid.pairs(order) &&
+            tree.pairs(order).size() == 19,
         "tree, sweep and grid find the same 19 pairs of 20 boxes in a row");
 
   std::printf("%s\n", failures == 0 ? "consumer: all checks passed" : "consumer: FAILED");

@@ -219,8 +219,10 @@ bool decode_pair(Reader& r, bool placing, F&& f) {
 /// reader is left after b for targets that read more. Returns whether f was called.
 template <class F>
 bool with_pair(Reader& r, F&& f) {
-  return detail::decode_pair(r, false, [&](const PairHeader& h, const auto& a, const auto&, const auto& b,
-                                           const auto&, Reader& rest) { f(h, a, b, rest); });
+  return detail::decode_pair(
+      r, false, [&](const PairHeader& h, const auto& a, const auto&, const auto& b, const auto&, Reader& rest) {
+        f(h, a, b, rest);
+      });
 }
 
 /// As with_pair, for targets that place shapes: with flags bit 6 each shape is followed by its

@@ -79,12 +79,13 @@ inline const char* case_dir() {
 /// A broken law on shapes: account, case file, abort. `complete` fills the law's other inputs
 /// into the case (the ray of a raycast case, the values of a rejection case).
 template <Scalar T>
-[[noreturn]] void fail(laws::Law law, const Shape<T>& a, const std::optional<Shape<T>>& b,
-                       const laws::Verdict& v, const std::function<void(laws::Case&)>& complete = {}) {
+[[noreturn]] void fail(laws::Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const laws::Verdict& v,
+                       const std::function<void(laws::Case&)>& complete = {}) {
   std::fprintf(stderr,
                "\n== collide fuzz target %s: law '%.*s' broken (%s)\n"
                "  a: %s\n",
-               std::string(kTarget).c_str(), int(name(law).size()), name(law).data(), scalar_name<T>(), describe(a).c_str());
+               std::string(kTarget).c_str(), int(name(law).size()), name(law).data(), scalar_name<T>(),
+               describe(a).c_str());
   if (b) std::fprintf(stderr, "  b: %s\n", describe(*b).c_str());
   std::fprintf(stderr, "  expected: %s\n  got:      %s\n  account:  %s\n", v.expected.c_str(), v.got.c_str(),
                v.account.c_str());

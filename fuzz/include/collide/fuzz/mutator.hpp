@@ -35,7 +35,9 @@ namespace collide::fuzz {
 
 using Rng = std::minstd_rand;
 
-inline std::size_t pick(Rng& rng, std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); }
+inline std::size_t pick(Rng& rng, std::size_t n) {
+  return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
+}
 
 /// Reads a field's value (float fields widen exactly).
 inline double load(const std::uint8_t* data, const Field& f) {
@@ -245,7 +247,8 @@ std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t max_size, u
   op -= w_point;
   if (op < w_touch) {
     const int moving = static_cast<int>(pick(rng, 2));
-    const std::optional<Vec2c> v = touch(static_cast<const std::uint8_t*>(data), size, TouchRequest{moving, 1 - moving}, rng);
+    const std::optional<Vec2c> v =
+        touch(static_cast<const std::uint8_t*>(data), size, TouchRequest{moving, 1 - moving}, rng);
     if (!v) return LLVMFuzzerMutate(data, size, max_size);
     for (std::size_t i : by_group(moving)) {
       const Field& f = fields[i];
@@ -271,24 +274,25 @@ std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t max_size, u
     const Field& f = fields[pick(rng, fields.size())];
     const bool is_float = f.width == 4;
     const double big = is_float ? double(max_magnitude<float>()) : max_magnitude<double>();
-    const double kSpecial[] = {0.0,
-                               -0.0,
-                               1.0,
-                               -1.0,
-                               std::numeric_limits<double>::quiet_NaN(),
-                               -std::numeric_limits<double>::quiet_NaN(),
-                               std::numeric_limits<double>::infinity(),
-                               -std::numeric_limits<double>::infinity(),
-                               is_float ? double(std::numeric_limits<float>::denorm_min()) : std::numeric_limits<double>::denorm_min(),
-                               is_float ? double(std::numeric_limits<float>::min()) : std::numeric_limits<double>::min(),
-                               big,
-                               -big,
-                               is_float ? double(std::nextafter(max_magnitude<float>(), std::numeric_limits<float>::infinity()))
-                                        : std::nextafter(big, std::numeric_limits<double>::infinity()),
-                               1e38,
-                               -1e38,
-                               0x1p-500,
-                               is_float ? double(std::numeric_limits<float>::max()) : std::numeric_limits<double>::max()};
+    const double kSpecial[] = {
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        std::numeric_limits<double>::quiet_NaN(),
+        -std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(),
+        is_float ? double(std::numeric_limits<float>::denorm_min()) : std::numeric_limits<double>::denorm_min(),
+        is_float ? double(std::numeric_limits<float>::min()) : std::numeric_limits<double>::min(),
+        big,
+        -big,
+        is_float ? double(std::nextafter(max_magnitude<float>(), std::numeric_limits<float>::infinity()))
+                 : std::nextafter(big, std::numeric_limits<double>::infinity()),
+        1e38,
+        -1e38,
+        0x1p-500,
+        is_float ? double(std::numeric_limits<float>::max()) : std::numeric_limits<double>::max()};
     store(data, f, kSpecial[pick(rng, std::size(kSpecial))]);
     return size;
   }

@@ -59,10 +59,10 @@ std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t m
 /// Defines the entry points of a pair target: LLVMFuzzerTestOneInput records the input, decodes it
 /// with decode_case(reader, f) and calls check(a, b); libFuzzer builds also get the pair mutator.
 #if defined(COLLIDE_FUZZ_ENGINE)
-#define COLLIDE_PAIR_MUTATOR(decode_case)                                                              \
-  extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,               \
-                                                 std::size_t max_size, unsigned int seed) {          \
-    return ::collide::fuzz::mutate_pair_case(data, size, max_size, seed,                              \
+#define COLLIDE_PAIR_MUTATOR(decode_case)                                                                      \
+  extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,   \
+                                                 unsigned int seed) {                                          \
+    return ::collide::fuzz::mutate_pair_case(data, size, max_size, seed,                                       \
                                              [](::collide::fuzz::Reader& r, auto&& f) { decode_case(r, f); }); \
   }
 #else
@@ -71,21 +71,21 @@ std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t m
 /// As COLLIDE_PAIR_FUZZ_TARGET for a target whose decode_case(reader, f) calls f(a, xa, b, xb)
 /// (with_placed_pair) and whose check takes the shapes with their transforms; the mutator sees the
 /// stored shapes.
-#define COLLIDE_PLACED_PAIR_FUZZ_TARGET(decode_case, check)                                           \
-  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                 \
-    ::collide::fuzz::current_input() = {data, size};                                                  \
-    ::collide::fuzz::Reader r(data, size);                                                            \
+#define COLLIDE_PLACED_PAIR_FUZZ_TARGET(decode_case, check)                                                    \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                          \
+    ::collide::fuzz::current_input() = {data, size};                                                           \
+    ::collide::fuzz::Reader r(data, size);                                                                     \
     decode_case(r, [](const auto& a, const auto& xa, const auto& b, const auto& xb) { check(a, xa, b, xb); }); \
-    return 0;                                                                                         \
-  }                                                                                                   \
-  COLLIDE_PAIR_MUTATOR(([](::collide::fuzz::Reader& r, auto&& f) {                                   \
-    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&) { f(a, b); });         \
+    return 0;                                                                                                  \
+  }                                                                                                            \
+  COLLIDE_PAIR_MUTATOR(([](::collide::fuzz::Reader& r, auto&& f) {                                             \
+    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&) { f(a, b); });                  \
   }))
-#define COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)                                                   \
-  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                 \
-    ::collide::fuzz::current_input() = {data, size};                                                  \
-    ::collide::fuzz::Reader r(data, size);                                                            \
-    decode_case(r, [](const auto& a, const auto& b) { check(a, b); });                                \
-    return 0;                                                                                         \
-  }                                                                                                   \
+#define COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)                                  \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
+    ::collide::fuzz::current_input() = {data, size};                                  \
+    ::collide::fuzz::Reader r(data, size);                                            \
+    decode_case(r, [](const auto& a, const auto& b) { check(a, b); });                \
+    return 0;                                                                         \
+  }                                                                                   \
   COLLIDE_PAIR_MUTATOR(decode_case)

@@ -37,12 +37,18 @@ enum class BroadphaseErrc : std::uint8_t {
 /// Stable name of a broadphase error, e.g. "InvalidProxy".
 constexpr std::string_view name(BroadphaseErrc e) noexcept {
   switch (e) {
-    case BroadphaseErrc::InvalidProxy: return "InvalidProxy";
-    case BroadphaseErrc::BadBox: return "BadBox";
-    case BroadphaseErrc::BadMargin: return "BadMargin";
-    case BroadphaseErrc::BadCellSize: return "BadCellSize";
-    case BroadphaseErrc::BadRay: return "BadRay";
-    case BroadphaseErrc::TooManyProxies: return "TooManyProxies";
+    case BroadphaseErrc::InvalidProxy:
+      return "InvalidProxy";
+    case BroadphaseErrc::BadBox:
+      return "BadBox";
+    case BroadphaseErrc::BadMargin:
+      return "BadMargin";
+    case BroadphaseErrc::BadCellSize:
+      return "BadCellSize";
+    case BroadphaseErrc::BadRay:
+      return "BadRay";
+    case BroadphaseErrc::TooManyProxies:
+      return "TooManyProxies";
   }
   return "Unknown";
 }
@@ -85,8 +91,8 @@ struct ProxyPair {
 /// `(a.category & b.mask) != 0 && (b.category & a.mask) != 0`. A proxy whose category or mask is
 /// 0 is never reported by anything.
 struct Filter {
-  std::uint32_t category = 1;          ///< which groups this proxy belongs to (bits)
-  std::uint32_t mask = 0xffffffffu;    ///< which groups this proxy pairs with (bits)
+  std::uint32_t category = 1;        ///< which groups this proxy belongs to (bits)
+  std::uint32_t mask = 0xffffffffu;  ///< which groups this proxy pairs with (bits)
   /// The filter that accepts every proxy with a non-zero category and mask (queries' default).
   static constexpr Filter everything() noexcept { return {0xffffffffu, 0xffffffffu}; }
   /// Same category and mask.
@@ -94,7 +100,9 @@ struct Filter {
 };
 
 /// The pairing rule of two filters (symmetric).
-constexpr bool accepts(Filter a, Filter b) noexcept { return (a.category & b.mask) != 0 && (b.category & a.mask) != 0; }
+constexpr bool accepts(Filter a, Filter b) noexcept {
+  return (a.category & b.mask) != 0 && (b.category & a.mask) != 0;
+}
 
 /// A proxy met by a ray: the handle and the entry parameter t (units of |direction|).
 struct ProxyHit {
@@ -117,15 +125,14 @@ struct Box {
 /// Closed-box overlap: touching (equal coordinates) counts. Exact (comparisons only).
 template <Scalar T>
 inline bool boxes_overlap(const Box<T>& a, const Box<T>& b) noexcept {
-  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() &&
-         b.min.y() <= a.max.y();
+  return a.min.x() <= b.max.x() && b.min.x() <= a.max.x() && a.min.y() <= b.max.y() && b.min.y() <= a.max.y();
 }
 
 /// True when `outer` contains `inner` (closed).
 template <Scalar T>
 inline bool box_contains(const Box<T>& outer, const Box<T>& inner) noexcept {
-  return outer.min.x() <= inner.min.x() && outer.min.y() <= inner.min.y() &&
-         inner.max.x() <= outer.max.x() && inner.max.y() <= outer.max.y();
+  return outer.min.x() <= inner.min.x() && outer.min.y() <= inner.min.y() && inner.max.x() <= outer.max.x() &&
+         inner.max.y() <= outer.max.y();
 }
 
 /// The corners of a validated box.
@@ -239,12 +246,12 @@ class Slots {
  public:
   /// One proxy's record.
   struct Slot {
-    Box<T> box{};                 ///< the stored box, as given
-    std::uint64_t user = 0;       ///< the caller's user data
-    Filter filter{};              ///< the proxy's filter
-    std::uint32_t generation = 0; ///< bumped on every reuse of the slot
-    bool live = false;            ///< false once removed
-    Extra extra{};                ///< the structure's own bookkeeping
+    Box<T> box{};                  ///< the stored box, as given
+    std::uint64_t user = 0;        ///< the caller's user data
+    Filter filter{};               ///< the proxy's filter
+    std::uint32_t generation = 0;  ///< bumped on every reuse of the slot
+    bool live = false;             ///< false once removed
+    Extra extra{};                 ///< the structure's own bookkeeping
   };
 
   /// Throws InvalidProxy unless id names a live proxy.
@@ -444,7 +451,6 @@ class ProxyOps {
   Derived& self() noexcept { return static_cast<Derived&>(*this); }
   const Derived& self() const noexcept { return static_cast<const Derived&>(*this); }
 };
-
 
 /// Sorts a pair list when asked to.
 inline void finish_pairs(std::vector<ProxyPair>& pairs, PairOrder order) {

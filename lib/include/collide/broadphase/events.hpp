@@ -95,7 +95,12 @@ class PairTracker {
         for (const std::uint32_t o : near_[i])
           if (bp_.overlap(id, ids_[o])) found_.push_back(o);
       } else {
-        bp_.query(bp_.box(id), [&](ProxyId o) { if (o.index != i) found_.push_back(o.index); }, bp_.filter(id));
+        bp_.query(
+            bp_.box(id),
+            [&](ProxyId o) {
+              if (o.index != i) found_.push_back(o.index);
+            },
+            bp_.filter(id));
         std::sort(found_.begin(), found_.end());
       }
       diff(i, out);
@@ -115,7 +120,8 @@ class PairTracker {
   /// Calls f(ProxyId) for every partner of id at the last update. Errors: InvalidProxy.
   template <class F>
   void for_each_partner(ProxyId id, F&& f) const {
-    if (!bp_.contains(id)) throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");
+    if (!bp_.contains(id))
+      throw BroadphaseError(BroadphaseErrc::InvalidProxy, "proxy handle is stale or was never issued");
     for (const std::uint32_t o : partners_[id.index]) f(ids_[o]);
   }
   /// The structure, for queries and raycasts.
@@ -123,7 +129,7 @@ class PairTracker {
 
  private:
   /// The structure keeps fat boxes and can tell who left theirs (DynamicTree).
-  static constexpr bool kFat = requires(BP& b, const BP& cb, ProxyId id, const Aabb<T>& box) {
+  static constexpr bool kFat = requires(BP & b, const BP& cb, ProxyId id, const Aabb<T>& box) {
     { b.move_fat(id, box) } -> std::same_as<bool>;
     cb.query_fat(id, [](ProxyId) {});
   };
@@ -210,10 +216,10 @@ class PairTracker {
   std::vector<std::vector<std::uint32_t>> partners_;  ///< sorted partner slots at the last update
   std::vector<std::uint32_t> changed_;                ///< slots added, moved or re-filtered since
   std::vector<char> changed_mark_;
-  std::vector<std::uint32_t> found_;                  ///< scratch: partners now
-  std::vector<ProxyPair> pending_ended_;              ///< pairs ended by removals
-  std::vector<std::vector<std::uint32_t>> near_;      ///< DynamicTree only: sorted fat-box neighbours
-  std::vector<char> refat_;                           ///< DynamicTree only: got a new fat box since
+  std::vector<std::uint32_t> found_;              ///< scratch: partners now
+  std::vector<ProxyPair> pending_ended_;          ///< pairs ended by removals
+  std::vector<std::vector<std::uint32_t>> near_;  ///< DynamicTree only: sorted fat-box neighbours
+  std::vector<char> refat_;                       ///< DynamicTree only: got a new fat box since
 };
 
 }  // namespace collide::broadphase

@@ -204,7 +204,8 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
       return e.slot != kDead && !(Calc(e.max_x) < lo.x() || Calc(e.max_y) < lo.y() || Calc(e.min_y) > hi.y());
     };
     // No entry starting before lo.x - max_width can reach lo.x (nextafter covers the rounding).
-    const Calc start = std::nextafter(lo.x() - max_width_ * (1 + kSweepWidthSlack), -std::numeric_limits<Calc>::infinity());
+    const Calc start =
+        std::nextafter(lo.x() - max_width_ * (1 + kSweepWidthSlack), -std::numeric_limits<Calc>::infinity());
     const auto end = entries_.begin() + std::ptrdiff_t(sorted_);
     auto it = std::lower_bound(entries_.begin(), end, start, [](const Entry& e, Calc v) { return Calc(e.min_x) < v; });
     for (; it != end && Calc(it->min_x) <= hi.x(); ++it)
@@ -216,8 +217,8 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
   Slots<T, Extra> slots_;
   std::vector<Entry> entries_;  ///< [0, sorted_) ascending by min_x, then the tail in add order
   std::size_t sorted_ = 0;
-  std::size_t dead_ = 0;        ///< entries of removed proxies (or moved to the tail), slot == kDead
-  Calc max_width_ = 0;          ///< at least the x extent of every live entry
+  std::size_t dead_ = 0;  ///< entries of removed proxies (or moved to the tail), slot == kDead
+  Calc max_width_ = 0;    ///< at least the x extent of every live entry
 };
 
 }  // namespace collide::broadphase

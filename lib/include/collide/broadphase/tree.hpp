@@ -318,7 +318,7 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
       const Node& n = node(i);
       const Calc area = perimeter(n.box);
       const Calc combined = perimeter(merged(n.box, lb));
-      const Calc cost = 2 * combined;            // new parent here
+      const Calc cost = 2 * combined;                // new parent here
       const Calc inherited = 2 * (combined - area);  // pushed down to every descendant
       auto child_cost = [&](std::int32_t c) {
         const Calc grown = perimeter(merged(node(c).box, lb));

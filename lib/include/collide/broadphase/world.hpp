@@ -84,8 +84,7 @@ Aabb<T> raycast_bounds(const Shape<T>& shape) {
 /// A contiguous list of Shape<T> other than a span of them (std::vector, std::array, a C array):
 /// the helpers below take one with T deduced, e.g. find_contacts(std::vector<Shape<float>>).
 template <class R>
-concept ShapeList =
-    std::ranges::contiguous_range<R> && VariantShape<std::ranges::range_value_t<R>> &&
+concept ShapeList = std::ranges::contiguous_range<R> && VariantShape<std::ranges::range_value_t<R>> &&
     std::is_same_v<std::ranges::range_value_t<R>, Shape<scalar_of_t<std::ranges::range_value_t<R>>>> &&
     !std::is_same_v<std::remove_cvref_t<R>, std::span<const std::ranges::range_value_t<R>>>;
 
@@ -120,8 +119,7 @@ struct ShapeHit {
 /// index), or nothing. The broadphase proposes the shapes whose bounding boxes the segment meets;
 /// collide::raycast settles each. Errors: BadRay (NaN/inf ray, negative max_t).
 template <Scalar T, class BP = DynamicTree<T>>
-std::optional<ShapeHit<T>> raycast_shapes(std::span<const Shape<T>> shapes, const Ray<T>& ray, T max_t,
-                                          BP bp = BP()) {
+std::optional<ShapeHit<T>> raycast_shapes(std::span<const Shape<T>> shapes, const Ray<T>& ray, T max_t, BP bp = BP()) {
   for (std::size_t i = 0; i < shapes.size(); ++i) bp.add(raycast_bounds(shapes[i]), i);
   std::optional<ShapeHit<T>> best;
   bp.raycast(ray, max_t, [&](ProxyId id, Calc) {

@@ -41,14 +41,16 @@ namespace detail {
 /// The answer for one pair of primitives, in the computation's precision.
 struct CoreCast {
   CastOutcome outcome = CastOutcome::Miss;
-  Calc s = 0;                       ///< time (hit or last safe time)
-  Vec2c normal = Vec2c::Zero();     ///< from the first core toward the second
-  Vec2c point = Vec2c::Zero();      ///< midway between the surfaces
+  Calc s = 0;                    ///< time (hit or last safe time)
+  Vec2c normal = Vec2c::Zero();  ///< from the first core toward the second
+  Vec2c point = Vec2c::Zero();   ///< midway between the surfaces
   int iterations = 0;
 };
 
 /// The target separation of an advancement whose moving shapes reach coordinates up to m.
-inline Calc advance_target(Calc m) noexcept { return kCastTargetFactor * kUnitRoundoff * m + kAbsoluteFloor; }
+inline Calc advance_target(Calc m) noexcept {
+  return kCastTargetFactor * kUnitRoundoff * m + kAbsoluteFloor;
+}
 
 /// Separation of the dilated cores along unit n (from p toward q): at most their gap.
 inline Calc separation_along(const Core& p, const Core& q, const Vec2c& n) noexcept {

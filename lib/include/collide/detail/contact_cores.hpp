@@ -40,8 +40,12 @@ struct CoreContact {
 
 /// The feature id of a point from the features of the first and of the second core.
 inline FeatureId id_of(const CoreFeature& p, const CoreFeature& q) noexcept {
-  return {0, 0, static_cast<std::uint8_t>(p.index), static_cast<std::uint8_t>(q.index),
-          p.edge ? FeatureKind::Edge : FeatureKind::Vertex, q.edge ? FeatureKind::Edge : FeatureKind::Vertex};
+  return {0,
+          0,
+          static_cast<std::uint8_t>(p.index),
+          static_cast<std::uint8_t>(q.index),
+          p.edge ? FeatureKind::Edge : FeatureKind::Vertex,
+          q.edge ? FeatureKind::Edge : FeatureKind::Vertex};
 }
 
 /// The largest absolute coordinate of two cores' points (their rounding scale).
@@ -313,7 +317,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   CoreContact out;
   out.overlapping = false;
   out.normal = d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q) ? unit_of(cl.on_q - cl.on_p)
-                                                                          : least_penetration(p, q).normal;
+                                                                           : least_penetration(p, q).normal;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
   out.separations[0] = gap;
@@ -326,7 +330,8 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
 inline std::optional<CoreContact> speculative_contact_cores(const Core& p, const Core& q, Calc speculative) {
   const int k = tiny_scale(p, q);
   if (k == 0) return speculative_contact_at_scale(p, q, speculative);
-  const std::optional<CoreContact> c = speculative_contact_at_scale(scaled(p, k), scaled(q, k), std::ldexp(speculative, k));
+  const std::optional<CoreContact> c =
+      speculative_contact_at_scale(scaled(p, k), scaled(q, k), std::ldexp(speculative, k));
   if (!c) return std::nullopt;
   return unscaled(*c, k);
 }

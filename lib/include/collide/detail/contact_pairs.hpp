@@ -57,14 +57,17 @@ struct Hull {
 /// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root.
 inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
   const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
-  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]] return d / dist;
+  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
+    return d / dist;
   return unit_of(d);
 }
 
 /// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
 /// scale s: every value entering it carries a few roundings of s (corners, differences, dots),
 /// below 32 units; 64 are used.
-inline Calc band_of(Calc s) noexcept { return kOverlapErrorFactor * kUnitRoundoff * s; }
+inline Calc band_of(Calc s) noexcept {
+  return kOverlapErrorFactor * kUnitRoundoff * s;
+}
 
 /// A box around a box or polygon, in double: exact for an AABB and a polygon, within a few
 /// roundings of its largest coordinate for an OBB (its extents computed from the axis).
@@ -98,8 +101,8 @@ RoughBox rough_box(const ConvexPolygon<T>& s) noexcept {
 template <class A, class B>
 bool apart_by_boxes(const A& a, const B& b, Calc speculative) noexcept {
   const RoughBox p = rough_box(a), q = rough_box(b);
-  const Calc scale = std::max({p.lo.cwiseAbs().maxCoeff(), p.hi.cwiseAbs().maxCoeff(), q.lo.cwiseAbs().maxCoeff(),
-                               q.hi.cwiseAbs().maxCoeff()});
+  const Calc scale = std::max(
+      {p.lo.cwiseAbs().maxCoeff(), p.hi.cwiseAbs().maxCoeff(), q.lo.cwiseAbs().maxCoeff(), q.hi.cwiseAbs().maxCoeff()});
   const Calc reach = band_of(scale) + std::max(speculative, Calc(0));
   return scale >= kTinyCore && (((q.lo - p.hi).array() > reach).any() || ((p.lo - q.hi).array() > reach).any());
 }
@@ -224,7 +227,9 @@ template <Scalar T>
   const std::size_t m = b.size();
   std::array<Vec2c, ConvexPolygon<T>::kInline> v;  // widened as the faces are visited
   const Vec2c* cached = PolygonAccess::normals(b);
-  const auto normal = [&](std::size_t i) { return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % m])); };
+  const auto normal = [&](std::size_t i) {
+    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % m]));
+  };
   const Vec2c c = widen(a.center());
   const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0)), own = std::max(c.cwiseAbs().maxCoeff(), r);
   Calc excess = -std::numeric_limits<Calc>::infinity(), scale = own;
@@ -263,7 +268,8 @@ template <Scalar T>
   // The closest point of the boundary lies on the face of largest excess or a neighbour: every
   // excess is at most the distance, and the closest feature's faces attain it.
   Closest cl;
-  closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false, face + m - 1, 3);
+  closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
+                             face + m - 1, 3);
   const Vec2c dq = cl.on_q - cl.on_p;
   const Calc dist = norm_of(dq), gap = dist - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
@@ -331,7 +337,8 @@ bool rect_of(const Obb<T>& s, Rect& k) {
 /// is not proper (see rect_of) takes the generic path unless the centre is clearly beyond a face.
 /// The rounding scale of a circle (centre c, radius r) and a box: their largest coordinate.
 inline Calc rect_scale(const Vec2c& c, Calc r, const Rect& k) noexcept {
-  return std::max({c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * std::max(k.w.squaredNorm(), Calc(1))});
+  return std::max(
+      {c.cwiseAbs().maxCoeff(), r, k.c.cwiseAbs().maxCoeff() + (k.hx + k.hy) * std::max(k.w.squaredNorm(), Calc(1))});
 }
 
 /// Whether the circle's centre lies beyond a face of the box by more than r plus the speculative
@@ -375,7 +382,8 @@ template <Scalar T, class B>
       // Feature: a corner when both coordinates were clamped, else the side beyond which c lies.
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
       const unsigned side = ex > 0 ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
-      out.ids[0] = id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
+      out.ids[0] =
+          id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
       out.normal = direction_of(dq, dist);
       out.overlapping = overlapping;
       out.separations[0] = overlapping ? gap : std::max(gap, Calc(0));
@@ -402,9 +410,9 @@ template <Scalar T, class B>
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
 /// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
-/// certain above the band plus 2 ties. Boxes flat on an axis or thinner than their rounding, polygons of more than 8 vertices and
-/// tiny pairs take the generic path. Kept out of line, so that apart_by_boxes() before it inlines
-/// into the caller.
+/// certain above the band plus 2 ties. Boxes flat on an axis or thinner than their rounding, polygons of more than 8
+/// vertices and tiny pairs take the generic path. Kept out of line, so that apart_by_boxes() before it inlines into the
+/// caller.
 template <class A, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_hulls(const A& a, const B& b, Calc speculative) {
   Hull ha, hb;
@@ -418,15 +426,16 @@ template <class A, class B>
 }
 
 template <class S>
-inline constexpr bool is_hull_kind_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
-                                       std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
+inline constexpr bool is_hull_kind_v =
+    std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
+    std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
 /// they overlap, or, with speculative > 0, when they are apart by at most speculative (rounded).
 template <class A, class B>
 std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
-  if constexpr ((circle_a || is_hull_kind_v<A>) && is_hull_kind_v<B>) {
+  if constexpr ((circle_a || is_hull_kind_v<A>)&&is_hull_kind_v<B>) {
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
       // Boxes flat on an axis or thinner than their rounding take the generic path.
       Rect k;

@@ -28,9 +28,7 @@ class Core {
     }
     push_big(p);
   }
-  std::span<const Vec2c> pts() const noexcept {
-    return {n_ > small_.size() ? big_.data() : small_.data(), n_};
-  }
+  std::span<const Vec2c> pts() const noexcept { return {n_ > small_.size() ? big_.data() : small_.data(), n_}; }
   std::size_t size() const noexcept { return n_; }
   const Vec2c& operator[](std::size_t i) const noexcept { return pts()[i]; }
   Calc radius = 0;
@@ -81,9 +79,8 @@ Core core_of(const Aabb<T>& s) {
 /// The convex hull of up to four points as a core (point, segment or counter-clockwise polygon),
 /// by the exact orient(). Used when rounding has collapsed or bent a box's computed corners.
 inline Core hull_core(std::array<Vec2c, 4> p) {
-  std::sort(p.begin(), p.end(), [](const Vec2c& a, const Vec2c& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
+  std::sort(p.begin(), p.end(),
+            [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   std::array<Vec2c, 8> h{};
   std::size_t k = 0;
   for (std::size_t i = 0; i < 4; ++i) {  // lower chain
@@ -96,7 +93,7 @@ inline Core hull_core(std::array<Vec2c, 4> p) {
     h[k++] = p[i];
   }
   Core c;
-  if (k >= 2) --k;  // the last point repeats the first
+  if (k >= 2) --k;                    // the last point repeats the first
   if (k <= 2 && p[0] == p[3]) k = 1;  // every point equal
   if (k == 2 && h[0] == h[1]) k = 1;
   for (std::size_t i = 0; i < k; ++i) c.push(h[i]);
@@ -148,7 +145,6 @@ Core core_of(const ConvexPolygon<T>& s) {
 // all below kTinyCore are first scaled by a power of two (exact: scaling up never rounds), so
 // decisions, depths and distances stay relative-accurate down to the subnormal range.
 
-
 inline Calc max_abs(const Core& c) noexcept {
   Calc m = std::fabs(c.radius);
   for (const Vec2c& p : c.pts()) m = std::max({m, std::fabs(p.x()), std::fabs(p.y())});
@@ -182,8 +178,8 @@ Calc scale_of(const Aabb<T>& b) noexcept {
 // Exact intersection of cores (closed sets). Every decision is an orient() sign or a comparison.
 
 inline bool in_box_of(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
-         std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+         p.y() <= std::max(a.y(), b.y());
 }
 
 inline bool point_on_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b) noexcept {
@@ -194,8 +190,8 @@ inline bool point_on_segment(const Vec2c& p, const Vec2c& a, const Vec2c& b) noe
 inline bool segments_intersect(const Vec2c& a, const Vec2c& b, const Vec2c& c, const Vec2c& d) noexcept {
   const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && in_box_of(c, a, b)) || (o2 == 0 && in_box_of(d, a, b)) ||
-         (o3 == 0 && in_box_of(a, c, d)) || (o4 == 0 && in_box_of(b, c, d));
+  return (o1 == 0 && in_box_of(c, a, b)) || (o2 == 0 && in_box_of(d, a, b)) || (o3 == 0 && in_box_of(a, c, d)) ||
+         (o4 == 0 && in_box_of(b, c, d));
 }
 
 /// p inside or on the boundary of a counter-clockwise convex polygon.
@@ -208,7 +204,9 @@ inline bool point_in_polygon(const Vec2c& p, std::span<const Vec2c> poly) noexce
 }
 
 /// The turn a -> b -> p (orient()); decide.hpp adds it for points kept unevaluated.
-inline int turn_of(const Vec2c& a, const Vec2c& b, const Vec2c& p) noexcept { return orient(a, b, p); }
+inline int turn_of(const Vec2c& a, const Vec2c& b, const Vec2c& p) noexcept {
+  return orient(a, b, p);
+}
 
 /// Some edge of `poly` has every point of `other` strictly outside it.
 template <class P>

@@ -45,13 +45,14 @@ class InvalidInput : public std::invalid_argument {
 /// product and sum exact (transform.hpp). A compound's children are placed by their own
 /// transforms first. A Shape<double> converts to the identity placement.
 struct Placed {
-  Shape<double> shape;                ///< the stored (local) shape, widened to double
-  Vec2<double> position{0.0, 0.0};    ///< the transform's position
-  Vec2<double> rotation{1.0, 0.0};    ///< the transform's rotation, as stored
+  Shape<double> shape;              ///< the stored (local) shape, widened to double
+  Vec2<double> position{0.0, 0.0};  ///< the transform's position
+  Vec2<double> rotation{1.0, 0.0};  ///< the transform's rotation, as stored
   /// The identity placement: the shape itself.
   Placed(Shape<double> s) : shape(std::move(s)) {}  // NOLINT(google-explicit-constructor)
   /// The shape under the transform (position, rotation).
-  Placed(Shape<double> s, const Vec2<double>& p, const Vec2<double>& q) : shape(std::move(s)), position(p), rotation(q) {}
+  Placed(Shape<double> s, const Vec2<double>& p, const Vec2<double>& q)
+      : shape(std::move(s)), position(p), rotation(q) {}
 };
 
 /// The exact answers, on double shapes. The templates below accept any shape type and scalar.
@@ -89,7 +90,9 @@ Shape<double> as_exact_input(const S& s) {
 }
 
 /// A placed shape is already an exact input.
-inline const Placed& as_exact_input(const Placed& p) { return p; }
+inline const Placed& as_exact_input(const Placed& p) {
+  return p;
+}
 
 /// Any shape with a transform as the oracle's exact input (both widened exactly).
 template <AnyShape S>
@@ -153,7 +156,7 @@ template <OracleInput S, Scalar T>
 bool inside_box(const S& s, const Aabb<T>& box) {
   // A bounding box may lie beyond max_magnitude() (it is rounded outward): widen it unchecked.
   return exact::inside_box(as_exact_input(s), detail::AabbAccess::unchecked<double>(box.min().template cast<double>(),
-                                                                                   box.max().template cast<double>()));
+                                                                                    box.max().template cast<double>()));
 }
 
 /// Exact sign of (distance from p to the shape's boundary - d). For p inside the closed shape

@@ -52,26 +52,26 @@ using CaseError = CodecError;
 
 /// One regression case: the law, the scalar, the inputs, and what was expected and found.
 struct Case {
-  Law law = Law::Agreement;        ///< the law (its name in the file)
-  std::string scalar = "double";   ///< "float" or "double"
-  ShapeData a;                     ///< first shape (the compound for hierarchy, the shape for bounds/raycast)
-  std::optional<ShapeData> b;      ///< second shape, for pair laws
+  Law law = Law::Agreement;                  ///< the law (its name in the file)
+  std::string scalar = "double";             ///< "float" or "double"
+  ShapeData a;                               ///< first shape (the compound for hierarchy, the shape for bounds/raycast)
+  std::optional<ShapeData> b;                ///< second shape, for pair laws
   std::optional<TransformData> transform_a;  ///< a's placement (identity when absent)
   std::optional<TransformData> transform_b;  ///< b's placement (identity when absent)
-  double tx = 0, ty = 0;           ///< translation laws: the move
-  int quarter_turns = 0;           ///< rotation law
-  bool mirror = false;             ///< rotation law
-  double ox = 0, oy = 0, dx = 0, dy = 0;  ///< raycast laws: ray origin and direction
-  double max_t = 0;                ///< raycast and cast laws: end of the interval
-  double px = 0, py = 0;           ///< contains laws: the point
-  double vax = 0, vay = 0, vbx = 0, vby = 0;  ///< cast laws: the velocities of a and b
+  double tx = 0, ty = 0;                     ///< translation laws: the move
+  int quarter_turns = 0;                     ///< rotation law
+  bool mirror = false;                       ///< rotation law
+  double ox = 0, oy = 0, dx = 0, dy = 0;     ///< raycast laws: ray origin and direction
+  double max_t = 0;                          ///< raycast and cast laws: end of the interval
+  double px = 0, py = 0;                     ///< contains laws: the point
+  double vax = 0, vay = 0, vbx = 0, vby = 0;     ///< cast laws: the velocities of a and b
   std::optional<std::array<double, 8>> sweep_a;  ///< toi law: a's sweep (local centre, c0, c1, a0, a1)
   std::optional<std::array<double, 8>> sweep_b;  ///< toi law: b's sweep
-  std::vector<double> values;      ///< rejection laws: raw values for shape a's kind, or of a transform
-  std::string expected;            ///< what the law expected (oracle side), one line
-  std::string got;                 ///< what the library answered, one line
-  std::string source;              ///< where it came from: property + pair + seed, or fuzz target + input
-  std::string account;             ///< the law's account, one line
+  std::vector<double> values;                    ///< rejection laws: raw values for shape a's kind, or of a transform
+  std::string expected;                          ///< what the law expected (oracle side), one line
+  std::string got;                               ///< what the library answered, one line
+  std::string source;                            ///< where it came from: property + pair + seed, or fuzz target + input
+  std::string account;                           ///< the law's account, one line
 };
 
 /// Pair name of the case ("circle_obb"), or the single kind name when there is no b.
@@ -103,7 +103,6 @@ std::filesystem::path save_case(const std::filesystem::path& dir, const Case& c)
 
 /// A case from a law's inputs and its verdict (expected/got are filled from the account).
 template <Scalar T>
-Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v,
-               std::string source);
+Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v, std::string source);
 
 }  // namespace collide::laws

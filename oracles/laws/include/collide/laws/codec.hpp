@@ -213,8 +213,8 @@ struct Codec<ShapeKind::Polygon> {
   static constexpr Layout layout = Layout::Vertices;
   static constexpr std::array<Field, 2> fields = {{{"x", Role::X}, {"y", Role::Y}}};
   /// A pentagon with vertices on a 1/64 grid near the unit circle.
-  static constexpr std::array<double, 10> sample = {1,         0,        0.3125,    0.953125,  -0.8125,
-                                                    0.578125,  -0.8125,  -0.578125, 0.3125,    -0.953125};
+  static constexpr std::array<double, 10> sample = {1,        0,       0.3125,    0.953125, -0.8125,
+                                                    0.578125, -0.8125, -0.578125, 0.3125,   -0.953125};
   static constexpr std::array<std::uint8_t, 0> byte_prefix = {};
   template <Scalar T>
   static std::vector<T> values(const ConvexPolygon<T>& s) {
@@ -265,11 +265,11 @@ static_assert(kKinds.back() == ShapeKind::Compound, "the compound must be the la
 /// The codec of a kind known at run time, without its types: layout, field names and roles,
 /// sample values, byte prefix.
 struct KindCodec {
-  ShapeKind kind;                               ///< the kind
-  Layout layout;                                ///< how its values are laid out
-  std::span<const Field> fields;                ///< the stored fields (per vertex for Vertices)
-  std::span<const double> sample;               ///< a sample shape's values
-  std::span<const std::uint8_t> byte_prefix;    ///< bytes before the values in the byte form
+  ShapeKind kind;                             ///< the kind
+  Layout layout;                              ///< how its values are laid out
+  std::span<const Field> fields;              ///< the stored fields (per vertex for Vertices)
+  std::span<const double> sample;             ///< a sample shape's values
+  std::span<const std::uint8_t> byte_prefix;  ///< bytes before the values in the byte form
 };
 
 /// The codec of kind k.
@@ -284,9 +284,12 @@ inline KindCodec codec_of(ShapeKind k) {
 inline std::size_t value_count(ShapeKind kind, std::size_t given) {
   const KindCodec c = codec_of(kind);
   switch (c.layout) {
-    case Layout::Fixed: return c.fields.size();
-    case Layout::Vertices: return given - given % c.fields.size();
-    case Layout::Children: return 0;
+    case Layout::Fixed:
+      return c.fields.size();
+    case Layout::Vertices:
+      return given - given % c.fields.size();
+    case Layout::Children:
+      return 0;
   }
   return 0;
 }

@@ -202,9 +202,13 @@ inline constexpr LawInfo kLaws[] = {
 inline constexpr std::size_t kLawCount = std::size(kLaws);
 
 /// The table row of a law.
-constexpr const LawInfo& info(Law l) noexcept { return kLaws[static_cast<std::size_t>(l)]; }
+constexpr const LawInfo& info(Law l) noexcept {
+  return kLaws[static_cast<std::size_t>(l)];
+}
 /// The name of a law, e.g. "agreement".
-constexpr std::string_view name(Law l) noexcept { return info(l).name; }
+constexpr std::string_view name(Law l) noexcept {
+  return info(l).name;
+}
 /// The law named `s`, or nullopt.
 constexpr std::optional<Law> law_from_name(std::string_view s) noexcept {
   for (const LawInfo& row : kLaws) {
@@ -324,11 +328,11 @@ namespace collide::laws {
 /// [0, max_t]. With both transforms the identity the laws call the world-space shape_cast().
 template <Scalar T>
 struct CastInput {
-  Vec2<T> va;              ///< velocity of a
-  Vec2<T> vb;              ///< velocity of b
-  T max_t;                 ///< end of the interval
-  Transform<T> xa = {};    ///< a's placement (its stored values are local to it)
-  Transform<T> xb = {};    ///< b's placement
+  Vec2<T> va;            ///< velocity of a
+  Vec2<T> vb;            ///< velocity of b
+  T max_t;               ///< end of the interval
+  Transform<T> xa = {};  ///< a's placement (its stored values are local to it)
+  Transform<T> xb = {};  ///< b's placement
 };
 
 /// Cast law. shape_cast(a, xa, va, b, xb, vb, max_t), judged by cast.hpp's contract with
