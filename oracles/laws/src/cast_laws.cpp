@@ -297,7 +297,12 @@ Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t) {
       fail(v, "both at t = 0 from inside", "");
     return v;
   }
-  // They differ only for a ray passing within the larger tolerance of the shape.
+  // A cast that misses never meets the shape exactly (its contract), whatever the ray says.
+  if (!c.hit() && oracle::meets_during(p, ray.direction, s, zero, 0.0, double(max_t), 0.0)) {
+    fail(v, "a cast that misses never meets the shape", "ray hit, cast missed an exact contact");
+    return v;
+  }
+  // Otherwise they differ only for a ray passing within the larger tolerance of the shape.
   const double pad = std::max(eps, delta);
   const bool near = oracle::meets_during(p, ray.direction, s, zero, 0.0, double(max_t), pad);
   if (!near)

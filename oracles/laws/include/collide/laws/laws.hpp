@@ -363,7 +363,8 @@ Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T
 
 /// A zero-radius circle cast from the ray's origin along its direction against a still s agrees
 /// with raycast(s, ray, max_t) on hit or miss, except for a ray passing within the larger of the
-/// two tolerances (a disagreement); both start inside: both at t = 0.
+/// two tolerances (a disagreement), and never misses when the exact dot meets s within max_t;
+/// both start inside: both at t = 0.
 template <Scalar T>
 Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
