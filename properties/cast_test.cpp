@@ -184,19 +184,6 @@ void check(const std::function<void()>& property) {
   }
 }
 
-std::optional<laws::Case> g_case;  // the last failing input (after shrinking), saved once per test
-
-/// Fails the property with the verdict's account (it holds every value in round-trip decimal),
-/// keeping its input as a case (make()).
-void judge(const laws::Verdict& v, const std::function<laws::Case()>& make) {
-  RC_CLASSIFY(true, std::string(laws::name(v.relation)));
-  if (v.disagreement) RC_TAG(std::string("disagreement"));
-  if (!v.ok) {
-    g_case = make();
-    RC_FAIL(v.account);
-  }
-}
-
 /// A case of a cast law: the shapes, the motion and the verdict.
 template <Scalar T>
 laws::Case motion_case(laws::Law law, const Motion<T>& m, const laws::Verdict& v, const std::string& test) {
@@ -226,20 +213,20 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return [=] {
         const Motion<T> m = gen_motion<T>(ka, kb);
         const laws::Verdict v = laws::cast_law(m.a, m.b, m.in);
-        judge(v, [&] { return motion_case(law, m, v, test); });
+        judge_case(v, [&] { return motion_case(law, m, v, test); });
       };
     case Law::CastSymmetry:
       return [=] {
         const Motion<T> m = gen_motion<T>(ka, kb);
         const laws::Verdict v = laws::cast_symmetry(m.a, m.b, m.in);
-        judge(v, [&] { return motion_case(law, m, v, test); });
+        judge_case(v, [&] { return motion_case(law, m, v, test); });
       };
     case Law::CastTranslation:
       return [=] {
         const Motion<T> m = gen_motion<T>(ka, kb);
         const Vec2<T> d = gen_translation<T>(pair_size(m.a, m.b));
         const laws::Verdict v = laws::cast_translation(m.a, m.b, m.in, d);
-        judge(v, [&] {
+        judge_case(v, [&] {
           laws::Case c = motion_case(law, m, v, test);
           c.tx = d.x();
           c.ty = d.y();
@@ -254,7 +241,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const Sweep<T> sb = *rc::gen::arbitrary<bool>() ? gen_sweep(b, inner_point(a), size) : Sweep<T>{};
         const T max_t = *rc::gen::elementOf(std::vector<T>{T(1), T(1), T(0.5)});
         const laws::Verdict v = laws::toi_law(a, sa, b, sb, max_t, std::span<const double>(laws::kToiSamples));
-        judge(v, [&] {
+        judge_case(v, [&] {
           laws::Case c = laws::make_case<T>(law, a, b, v, "property " + test + " " + seed_text());
           c.sweep_a = sweep_values(sa);
           c.sweep_b = sweep_values(sb);
@@ -271,7 +258,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         const Vec2<T> dir = aimed ? to_t<T>(to - from) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
         const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
         const laws::Verdict v = laws::cast_raycast(a, Ray<T>{origin, dir}, max_t);
-        judge(v, [&] {
+        judge_case(v, [&] {
           laws::Case c = laws::make_case<T>(law, a, std::nullopt, v, "property " + test + " " + seed_text());
           c.ox = origin.x();
           c.oy = origin.y();
@@ -290,16 +277,12 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
 /// Every law of the Moving suite, over what it takes (law_tests.hpp); each test runs
 /// COLLIDE_CAST_DEPTH times RapidCheck's max_success and saves its counterexample.
 void register_all() {
-  register_suite(
+  register_saving_suite(
       laws::LawSuite::Moving,
       []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
         return property_of<T>(law, ka, kb, test);
       },
-      [](const std::function<void()>& property) {
-        g_case.reset();
-        check(property);
-        if (g_case) save_counterexample(*g_case);
-      });
+      check);
 }
 
 }  // namespace

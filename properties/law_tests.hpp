@@ -6,6 +6,7 @@
 /// Test names are <law>.<subject>_<scalar>, or <law>.<scalar> for laws taken once.
 
 #include <gtest/gtest.h>
+#include <rapidcheck.h>
 
 #include "collide/laws/case_file.hpp"
 #include "collide/laws/laws.hpp"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace collide::props {
@@ -117,6 +119,34 @@ inline std::string save_counterexample(const laws::Case& c) {
     ADD_FAILURE() << "could not save the counterexample: " << e.what();
     return "";
   }
+}
+
+/// The running test's last failing input (after shrinking, the smallest), set by judge_case().
+inline std::optional<laws::Case>& failing_case() {
+  static std::optional<laws::Case> c;
+  return c;
+}
+
+/// Fails the property with the verdict's account (every value in round-trip decimal), keeping its
+/// input as a case (make()); tags in-band disagreements and classifies by relation.
+inline void judge_case(const laws::Verdict& v, const std::function<laws::Case()>& make) {
+  RC_CLASSIFY(true, std::string(laws::name(v.relation)));
+  if (v.disagreement) RC_TAG(std::string("disagreement"));
+  if (!v.ok) {
+    failing_case() = make();
+    RC_FAIL(v.account);
+  }
+}
+
+/// register_suite() whose tests run their property by check(p) (RapidCheck with the suite's depth)
+/// and save the shrunk counterexample judge_case() kept.
+template <class Property, class Check>
+void register_saving_suite(laws::LawSuite suite, Property property, Check check) {
+  register_suite(suite, property, [check](const std::function<void()>& p) {
+    failing_case().reset();
+    check(p);
+    if (failing_case()) save_counterexample(*failing_case());
+  });
 }
 
 }  // namespace collide::props

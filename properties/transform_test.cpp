@@ -23,20 +23,6 @@
 namespace collide::props {
 namespace {
 
-std::string g_last;                // the failing verdict's account, printed once per test
-std::optional<laws::Case> g_case;  // the last failing input (after shrinking), saved once per test
-
-/// Fails the property with the verdict's account, keeping its input as a case (make()).
-void judge(const laws::Verdict& v, const std::function<laws::Case()>& make) {
-  if (v.disagreement) RC_TAG(std::string("disagreement"));
-  RC_CLASSIFY(true, std::string(laws::name(v.relation)));
-  if (!v.ok) {
-    g_last = v.account;
-    g_case = make();
-    RC_FAIL(v.account);
-  }
-}
-
 /// A case of a law of placed shapes: the shapes, their transforms and the verdict.
 template <Scalar T>
 laws::Case placed_case(laws::Law law, const Shape<T>& a, std::optional<Transform<T>> xa,
@@ -80,7 +66,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     return [=] {
       const auto [a, xa, b, xb] = placed_pair();
       const laws::Verdict v = f(a, xa, b, xb);
-      judge(v, [&] { return placed_case<T>(law, a, xa, b, xb, v, test); });
+      judge_case(v, [&] { return placed_case<T>(law, a, xa, b, xb, v, test); });
     };
   };
   switch (law) {
@@ -95,7 +81,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         auto [a, b] = gen_pair<T>(ka, kb);
         const Transform<T> x = gen_transform<T>(scale_of_pair(a, b));
         const laws::Verdict v = laws::placed_covariance(a, b, x);
-        judge(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
+        judge_case(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
       };
     case Law::PlacedImage:
       return [=] {
@@ -104,7 +90,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
         a = with_child_transforms(a, s);
         const Transform<T> x = gen_transform<T>(s);
         const laws::Verdict v = laws::placed_image(a, x, b);
-        judge(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
+        judge_case(v, [&] { return placed_case<T>(law, a, x, b, std::nullopt, v, test); });
       };
     case Law::PlacedShape:
       return [=] {
@@ -121,7 +107,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
             *rc::gen::inRange(0, 4) != 0 ? Vec2<T>(target - origin) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
         const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2)});
         const laws::Verdict v = laws::placed_shape(a, x, point, Ray<T>{origin, dir}, max_t);
-        judge(v, [&] {
+        judge_case(v, [&] {
           laws::Case c = placed_case<T>(law, a, x, std::nullopt, std::nullopt, v, test);
           c.px = point.x();
           c.py = point.y();
@@ -137,7 +123,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return [=] {
         const std::vector<T> values = gen_transform_values<T>();
         const laws::Verdict v = laws::transform_rejection<T>(std::span<const T>(values));
-        judge(v, [&] {
+        judge_case(v, [&] {
           laws::Case c;
           c.law = law;
           c.scalar = std::is_same_v<T, float> ? "float" : "double";
@@ -155,21 +141,15 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
   return {};
 }
 
-/// Every law of the Placed suite, over what it takes (law_tests.hpp); a failure's account is
-/// printed once and its input saved as a case file.
+/// Every law of the Placed suite, over what it takes (law_tests.hpp); each test saves its shrunk
+/// counterexample as a case file.
 void register_all() {
-  register_suite(
+  register_saving_suite(
       laws::LawSuite::Placed,
       []<Scalar T>(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
         return property_of<T>(law, ka, kb, test);
       },
-      [](const std::function<void()>& property) {
-        g_last.clear();
-        g_case.reset();
-        ::rc::detail::checkGTest(property);
-        if (!g_last.empty()) ADD_FAILURE() << g_last;
-        if (g_case) save_counterexample(*g_case);
-      });
+      [](const std::function<void()>& property) { ::rc::detail::checkGTest(property); });
 }
 
 }  // namespace
