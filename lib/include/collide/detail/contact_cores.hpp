@@ -56,16 +56,38 @@ inline Calc point_scale(const Core& p, const Core& q) noexcept {
   return scale;
 }
 
+/// The unit normal of two cores' closest points cl (from p toward q) and their distance along it.
+/// When a closest point lies inside a face, that face's normal: exact to the rounding of the
+/// face's direction, where the points' own offset is off by the rounding of their coordinates,
+/// and over a short offset and a deep overlap that tilt would push a shape off a flat face short
+/// of clearing it. Else the points' own direction (two vertices: the tilt then costs little).
+struct ClosestNormal {
+  Vec2c normal;
+  Calc distance;
+};
+inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest& cl) {
+  const Vec2c d = cl.on_q - cl.on_p;
+  for (const auto& [c, f] : {std::pair<const Core&, const CoreFeature&>{q, cl.feature_q}, {p, cl.feature_p}}) {
+    if (!f.edge || c.size() < 2) continue;
+    const std::size_t i = c.size() == 2 ? 0 : f.index;  // a segment's sides share its one edge
+    const Vec2c e = c[i + 1 < c.size() ? i + 1 : 0] - c[i];
+    Vec2c n = unit_of(Vec2c(e.y(), -e.x()));
+    if (n.dot(d) < 0) n = -n;
+    if (n != Vec2c::Zero()) return {n, d.dot(n)};
+  }
+  return {unit_of(d), norm_of(d)};
+}
+
 /// Step 1 from the closest points cl of the cores p and q (see contact_of_separate_cores()).
 inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core& q, const Closest& cl) {
-  const Calc d = norm_of(cl.on_q - cl.on_p);
-  if (!(d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
+  const ClosestNormal cn = closest_normal(p, q, cl);
+  if (!(cn.distance > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
   CoreContact out;
-  out.normal = unit_of(cl.on_q - cl.on_p);
-  out.depth = std::max(Calc(0), p.radius + q.radius - d);
+  out.normal = cn.normal;
+  out.depth = std::max(Calc(0), p.radius + q.radius - cn.distance);
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
-  out.separations[0] = d - p.radius - q.radius;
+  out.separations[0] = cn.distance - p.radius - q.radius;
   out.ids[0] = id_of(cl.feature_p, cl.feature_q);
   out.count = 1;
   return out;
@@ -316,7 +338,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   if (!(gap <= speculative)) return std::nullopt;
   CoreContact out;
   out.overlapping = false;
-  out.normal = d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q) ? unit_of(cl.on_q - cl.on_p)
+  out.normal = d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q) ? closest_normal(p, q, cl).normal
                                                                            : least_penetration(p, q).normal;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
