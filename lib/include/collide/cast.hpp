@@ -104,7 +104,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
   Calc s = 0;
   each_axis([&](const Vec2c& n) { s = std::max(s, safe_along(p, n)); });
   const bool apart = s > 0;
-  if (s >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
+  if (apart && s >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
   for (int step = 0; step < kCastMaxIterations; ++step) {
     const Core pm = moved_core(p, w * s);
     if (!apart && step == 0 && cores_intersect(pm, q)) return hit_overlapping(pm, q, s, step);
