@@ -346,6 +346,7 @@ TEST(CastRegression, HitPointAlongTheClosestPointsNotTheFaceNormal) {
 }
 
 }  // namespace
+
 TEST(CastRegression, TouchingStartOverAnEmptyIntervalIsAHitNotAMiss) {
   using V = Vec2<double>;
   // Over [0, 0] a pair that no face separates is not yet proven apart: the faces' bound alone
