@@ -346,4 +346,19 @@ TEST(CastRegression, HitPointAlongTheClosestPointsNotTheFaceNormal) {
 }
 
 }  // namespace
+
+TEST(CastRegression, TouchingStartOverAnEmptyIntervalIsAHitNotAMiss) {
+  using V = Vec2<double>;
+  // Over [0, 0] a pair that no face separates is not yet proven apart: the faces' bound alone
+  // must not declare the miss (the fuzz corpus's sliver touching a point circle, as a box).
+  const Aabb<double> a(V(0, 0), V(1, 1));
+  const Circle<double> b(V(1.5, 0.5), 0.5);
+  const CastResult<double> r = shape_cast(a, V(0, 0), b, V(0, 0), 0.0);
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  EXPECT_EQ(r.t, 0.0);
+  const CastResult<double> s = shape_cast(b, V(3, 0), a, V(0, 0), 0.0);
+  ASSERT_EQ(s.outcome, CastOutcome::Hit);
+  EXPECT_EQ(s.t, 0.0);
+}
+
 }  // namespace collide::test

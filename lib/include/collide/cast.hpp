@@ -39,10 +39,16 @@
 /// No allocation for shapes of at most 8 vertices (a compound's children are imaged one at a
 /// time, never copied).
 ///
-/// Method: conservative advancement on the dilated cores (detail/core.hpp). At each step the
-/// closest points give an axis n; the separation along n shrinks at most at the closing speed
-/// n . w (plus its rounding), so the cores advance by (separation - target) / closing speed and
-/// stay apart by about target; a closing speed that never reaches the gap before max_t is a miss.
+/// Method: conservative advancement on the dilated cores (detail/core.hpp). Along any unit axis n
+/// the separation is at most the gap and falls no faster than the closing speed n . w (plus its
+/// rounding), so the time it takes to fall to target is a safe step, and the largest over all
+/// axes is taken. Face normals do not turn under translation, so the faces of both cores bound
+/// the motion once, from s = 0: for two polygons they are the faces of the Minkowski difference
+/// and that one step reaches the first contact up to target (or proves a miss: a face separating
+/// that does not close). Then each step takes the closest points' direction (the gap over |w|
+/// when rounding leaves it separating by no more than target) until the gap is within 2 target.
+/// The start needs no separate test: shapes that overlap stop at s = 0, and contact() gives them
+/// their normal and point.
 
 #include "collide/compound.hpp"
 #include "collide/detail/advance.hpp"
@@ -70,30 +76,50 @@ inline Core moved_core(const Core& c, const Vec2c& v) {
 }
 
 /// Conservative advancement of core p moving by w per unit time against the fixed core q, from
-/// s = 0, where the two are known to be apart, up to s_max; both dilated by skin in all (the
-/// images' distance from the exact shapes), so that the exact shapes stay apart too.
+/// s = 0 up to s_max; both dilated by skin in all (the images' distance from the exact shapes),
+/// so that the exact shapes stay apart too.
 inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Calc s_max, Calc target, Calc skin) {
   const Calc r = p.radius + q.radius + skin;
   // n . w is off by a few roundings of |w| (n is a rounded unit vector).
   const Calc closing_error = 4 * kUnitRoundoff * (std::fabs(w.x()) + std::fabs(w.y()));
-  Calc s = 0;
-  for (int step = 0; step < kCastMaxIterations; ++step) {
-    const Core pm = moved_core(p, w * s);
-    const Closest cl = closest_points(pm, q);
-    const Calc gap = std::sqrt(cl.dist2) - r;
-    if (gap <= 2 * target) return hit_between(pm, q, cl, s, step);
-    // Separation along the best axis: never more than the gap, and it falls no faster than the
-    // closing speed, so stepping to where it reaches target leaves the cores apart. When rounding
-    // has left no axis separating by more than target, the gap itself falls no faster than |w|.
-    const Vec2c n = best_axis(pm, q, cl);
+  // The time the separation along unit n (never more than the gap) takes to fall to target at
+  // the closing speed n . w: 0 when it is not above target, +inf when nothing closes along n.
+  const auto safe_along = [&](const Core& pm, const Vec2c& n) {
     const Calc separation = separation_along(pm, q, n) - skin;
     const Calc closing = std::max(n.dot(w), Calc(0)) + closing_error;
-    Calc ds = separation > target ? (separation - target) / closing : Calc(0);  // +inf when w = 0
+    return separation > target ? (separation - target) / closing : Calc(0);
+  };
+  // Face normals do not turn under translation: computed once, from p toward q.
+  const KeptFaces fp = kept_faces(p), fq = kept_faces(q);
+  const auto each_axis = [&](auto&& f) {
+    for_each_kept_face(fp, p, f);
+    for_each_kept_face(fq, q, [&](const Vec2c& n) { f(Vec2c(-n)); });
+  };
+  const auto hit = [&](const Core& pm, const Closest& cl, Calc s, int step) {
+    return hit_between(pm, q, cl, s, step, best_axis(pm, q, cl, each_axis));
+  };
+  // Face axes first: under translation the separation along a fixed axis falls exactly linearly,
+  // so every face's bound from s = 0 holds at once and the largest is safe. For polygons these
+  // are the faces of the Minkowski difference: the largest is the first contact, up to target.
+  Calc s = 0;
+  each_axis([&](const Vec2c& n) { s = std::max(s, safe_along(p, n)); });
+  const bool apart = s > 0;
+  if (apart && s >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
+  for (int step = 0; step < kCastMaxIterations; ++step) {
+    const Core pm = moved_core(p, w * s);
+    if (!apart && step == 0 && cores_intersect(pm, q)) return hit_overlapping(pm, q, s, step);
+    const Closest cl = closest_points(pm, q);
+    const Calc gap = std::sqrt(cl.dist2) - r;
+    if (gap <= 2 * target) return hit(pm, cl, s, step);
+    // Then the closest points' direction; when rounding leaves it separating by no more than
+    // target, the gap itself falls no faster than |w|.
+    const Vec2c n = unit_of(cl.on_q - cl.on_p);
+    Calc ds = n == Vec2c::Zero() ? Calc(0) : safe_along(pm, n);
     if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
-    if (!(ds > 0)) return hit_between(pm, q, cl, s, step);
+    if (!(ds > 0)) return hit(pm, cl, s, step);
     if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;
-    if (next == s) return hit_between(pm, q, cl, s, step);
+    if (next == s) return hit(pm, cl, s, step);
     s = next;
   }
   return CoreCast{CastOutcome::IterationLimit, s, Vec2c::Zero(), Vec2c::Zero(), kCastMaxIterations};
@@ -176,15 +202,6 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
     const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
   using T = scalar_of_t<A>;
   if (!detail::cast_input_valid(va, vb, max_t)) return detail::invalid_cast<T>();
-  // Starting in contact (the computed images overlap): answered by contact().
-  if (const auto c = contact(a, xa, b, xb)) {
-    CastResult<T> out;
-    out.outcome = CastOutcome::Hit;
-    out.t = T(0);
-    out.point = c->points[0];
-    out.normal = c->normal;
-    return out;
-  }
   const Vec2c wa = widen(va), wb = widen(vb), w = wa - wb;
   const Calc s_max = static_cast<Calc>(max_t);
   const Calc target = detail::advance_target(detail::cast_scale(a, xa, b, xb, w, s_max));
@@ -197,7 +214,16 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
                                     : detail::with_placed_pair(a, xa, b, xb, [&](const auto& pa, const auto& pb) {
                                         return detail::earliest_over_pairs(pa, pb, s_max, step);
                                       });
-  return detail::to_result<T>(best, s_max);
+  CastResult<T> out = detail::to_result<T>(best, s_max);
+  // Starting in contact (the computed images overlap, so the advancement stopped at once): the
+  // normal and point of contact().
+  if (out.hit() && out.t == T(0)) {
+    if (const auto c = contact(a, xa, b, xb)) {
+      out.point = c->points[0];
+      out.normal = c->normal;
+    }
+  }
+  return out;
 }
 
 /// The first time in [0, max_t] at which a moving at va meets b moving at vb, both in world

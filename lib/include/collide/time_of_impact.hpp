@@ -18,32 +18,42 @@
 /// - At a Hit's t the posed shapes are at most eps apart; a Hit at t = 0 means they overlap at
 ///   s = 0 or are within eps there.
 /// - A Miss means the shapes are apart at every time in [0, max_t].
-/// - eps = 3 * target + 2 eps_T V max_t + 2 denorm_min_T V, target = kCastTargetFactor * 2^-53 * M
-///   + 2^-500, with V the bound on how fast any point of one body moves relative to the other
-///   (|c1 - c0| + |a1 - a0| * rho per body, rho the reach of its core from its centre of rotation)
-///   and M the motion's scale: the positions' magnitude plus (2 |local_center| + the shapes' scale)
-///   times (2 + |a0| + |a1|), which bounds the rounding of the poses (large angles lose absolute
-///   accuracy in their cosines).
+/// - eps = 3 * target + 2 eps_T V max_t + 2 denorm_min_T V + 2 delta, target =
+///   kCastTargetFactor * 2^-53 * M + 2^-500, with V the bound on how fast any point of one body
+///   moves relative to the other (|c1 - c0| + |a1 - a0| * rho per body, rho the reach of its core
+///   from its centre of rotation), M the motion's scale: the positions' magnitude plus
+///   (2 |local_center| + the shapes' scale) times (2 + |a0| + |a1|), which bounds the rounding of
+///   the poses (large angles lose absolute accuracy in their cosines), and delta =
+///   placement_tolerance(a) + placement_tolerance(b) (0 but for compounds whose children carry
+///   transforms: their children's images lie within it of the exact ones).
 /// - Defined answers for shapes that start in contact, for no motion, for pure rotation. NaN or
 ///   infinite input, max_t outside [0, 1], or a value beyond max_magnitude<T>() give
 ///   CastOutcome::InvalidInput; beyond kCastMaxIterations steps per pair of primitives the answer
 ///   is IterationLimit with the last time proven free of contact. No allocation for shapes of at
 ///   most 8 vertices.
 ///
-/// Method: conservative advancement. Along the best separating axis n (a face normal or the
-/// closest points' direction) the separation falls no faster than the centres' closing speed
-/// along n plus each body's turn rate times its reach; and every point of a body moves at most V
-/// per unit of time relative to the other, so from a gap g the bodies cannot meet before
-/// (g - target) / V. A step advances by the axis bound, or by the gap bound when rounding leaves
-/// no axis separating by more than target.
+/// Method: conservative advancement. Along any fixed axis n the separation falls no faster than
+/// the centres' closing speed along n plus each body's turn rate times its reach, so the time it
+/// takes to fall to target is a safe step; and each point's coordinate along n has a second
+/// derivative of at most turn rate^2 times its arm, so a Taylor bound that follows the points
+/// near the support (their rates now) gives a second, far larger step near contact. Each step
+/// takes the largest over every face normal of both posed cores (the kept local normals turned
+/// by the pose) and the closest points' direction. Every point of a body moves at most V per
+/// unit of time relative to the other, so from a gap g the bodies cannot meet before
+/// (g - target) / V: the step when rounding leaves no axis separating by more than target. A
+/// compound whose children carry their own transforms is advanced on its children's images,
+/// which lie within placement_tolerance() of the exact ones: the cores are dilated by it, as
+/// shape_cast() dilates by overlap_tolerance().
 
 #include "collide/cast.hpp"
 #include "collide/compound.hpp"
 #include "collide/detail/advance.hpp"
 #include "collide/detail/core.hpp"
+#include "collide/queries.hpp"
 #include "collide/shape_traits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -92,6 +102,11 @@ inline Core posed_core(const Core& c, const SweepPose& pose) {
   return out;
 }
 
+/// n turned by the rotation (cos, sin).
+inline Vec2c turned(const Vec2c& rotation, const Vec2c& n) noexcept {
+  return Vec2c(rotation.x() * n.x() - rotation.y() * n.y(), rotation.y() * n.x() + rotation.x() * n.y());
+}
+
 /// Upper bound on how far any point of the local core lies from the centre of rotation.
 inline Calc reach_of(const Core& c, const Vec2c& center) noexcept {
   Calc r = 0;
@@ -115,38 +130,160 @@ Calc sweep_scale(const Sweep<T>& sw, Calc shape_scale) noexcept {
   return pos + (2 * widen(sw.local_center).cwiseAbs().maxCoeff() + shape_scale) * turns;
 }
 
-/// Conservative advancement of two local cores moved by their sweeps, from s = 0 to s_max.
-/// Along a fixed axis n the separation falls no faster than n . (centre velocity of p - that of q)
-/// plus each body's turn rate times its reach, so a translating pair steps as a linear cast does
-/// (a box sliding along flat ground is a miss in one step); when rounding leaves no axis
-/// separating by more than target, the gap itself falls no faster than the bound on all motion.
+/// The offsets of a local core's points from its centre of rotation, kept for the bound on how fast each point
+/// moves (at most 8 points; kept = false for a larger core).
+struct Arms {
+  std::array<Vec2c, 8> arm;
+  bool kept = false;
+};
+
+inline Arms arms_of(const Core& local, const Vec2c& center) {
+  Arms a;
+  a.kept = local.size() <= a.arm.size();
+  if (!a.kept) return a;
+  for (std::size_t i = 0; i < local.size(); ++i) a.arm[i] = local[i] - center;
+  return a;
+}
+
+/// How a posed core leads along a fixed unit axis n over the next stretch of time: its support now, the fastest
+/// rate of its points near the support (within a quarter of its extent along n) and of all its points, and how
+/// far the others lie behind the support. With the curvature bound K of its motion, support(s + h) <= support +
+/// max(h near_rate, h all_rate - behind) + K h^2 / 2 for every h >= 0 (each point's coordinate along n has a
+/// second derivative of at most turn rate^2 times its arm).
+struct Lead {
+  Calc support = 0;
+  Calc near_rate = 0;
+  Calc all_rate = 0;
+  Calc behind = std::numeric_limits<Calc>::infinity();
+};
+
+/// Lead of the posed core p (arms turned by rotation) moving its centre at velocity and turning at turn per unit
+/// time, along n.
+inline Lead lead_along(const Core& p, const Arms& arms, const Vec2c& rotation, const Vec2c& n, const Vec2c& velocity,
+                       Calc turn) {
+  std::array<Calc, 8> along, rate;
+  Calc lo = std::numeric_limits<Calc>::infinity();
+  Lead out;
+  out.support = -std::numeric_limits<Calc>::infinity();
+  const Calc slide = n.dot(velocity);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2c arm = turned(rotation, arms.arm[i]);
+    along[i] = p[i].dot(n);
+    rate[i] = slide + turn * (n.y() * arm.x() - n.x() * arm.y());
+    out.support = std::max(out.support, along[i]);
+    lo = std::min(lo, along[i]);
+  }
+  const Calc near = out.support - (out.support - lo) * 0.25;
+  out.near_rate = out.all_rate = -std::numeric_limits<Calc>::infinity();
+  Calc next = -std::numeric_limits<Calc>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    out.all_rate = std::max(out.all_rate, rate[i]);
+    if (along[i] >= near) {
+      out.near_rate = std::max(out.near_rate, rate[i]);
+    } else {
+      next = std::max(next, along[i]);
+    }
+  }
+  out.behind = out.support - next;  // +inf when every point is near
+  return out;
+}
+
+/// The first h >= 0 at which room - c h - k h^2 / 2 falls to 0 (room > 0, k >= 0): +inf when it never does.
+inline Calc first_reach(Calc room, Calc c, Calc k) noexcept {
+  const Calc den = c + std::sqrt(c * c + 2 * k * room);
+  return den > 0 ? 2 * room / den : std::numeric_limits<Calc>::infinity();
+}
+
+/// The time the separation (room = separation - target > 0) of p leading along n and q along -n may take to fall
+/// to target: the first reach of each of the four quadratic bounds that the two leads give, less the rounding of
+/// the rates (rate_error) and the slack of the result.
+inline Calc lead_step(Calc room, const Lead& lp, const Lead& lq, Calc rate_error, Calc curvature) noexcept {
+  Calc h = std::numeric_limits<Calc>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const bool far_p = k & 1, far_q = k & 2;
+    const Calc ahead = (far_p ? lp.behind : 0) + (far_q ? lq.behind : 0);
+    if (!(ahead < std::numeric_limits<Calc>::infinity())) continue;  // nothing behind
+    const Calc c = (far_p ? lp.all_rate : lp.near_rate) + (far_q ? lq.all_rate : lq.near_rate) + rate_error;
+    h = std::min(h, first_reach(room + ahead, c, curvature));
+  }
+  return h * (1 - kMotionBoundSlack);
+}
+
+/// Conservative advancement of two local cores moved by their sweeps, from s = 0 to s_max, both dilated by skin
+/// in all (the images' distance from the exact shapes). Along a fixed axis n the separation falls no faster than
+/// n . (centre velocity of p - that of q) plus each body's turn rate times its reach, so every face normal of
+/// both posed cores and the closest points' direction bound a safe step, and the largest is taken (a translating
+/// pair of polygons steps to its first contact at once; a box sliding along flat ground is a miss in one step);
+/// when rounding leaves no axis separating by more than target, the gap itself falls no faster than the bound on
+/// all motion.
 template <Scalar T>
-CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max,
-                       Calc target) {
-  const Calc r = pl.radius + ql.radius;
+CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max, Calc target,
+                       Calc skin) {
+  const Calc r = pl.radius + ql.radius + skin;
   const Calc speed = sweep_speed(sp, pl) + sweep_speed(sq, ql);
-  const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
+  const Vec2c v = (widen(sp.c1) - widen(sp.c0)) - (widen(sq.c1) - widen(sq.c0));
   const Calc turning =
       (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_of(pl, widen(sp.local_center)) +
        std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_of(ql, widen(sq.local_center))) *
       (1 + kMotionBoundSlack);
-  const Calc closing_error = 8 * kUnitRoundoff * (vp.cwiseAbs().sum() + vq.cwiseAbs().sum());
+  const Calc closing_error =
+      8 * kUnitRoundoff *
+      ((widen(sp.c1) - widen(sp.c0)).cwiseAbs().sum() + (widen(sq.c1) - widen(sq.c0)).cwiseAbs().sum());
+  const KeptFaces fp = kept_faces(pl), fq = kept_faces(ql);
+  // A Taylor bound on each point's motion: its rate now and turn rate^2 times its arm after.
+  const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
+  const Calc wp = static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0);
+  const Calc wq = static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0);
+  const Arms arms_p = arms_of(pl, widen(sp.local_center)), arms_q = arms_of(ql, widen(sq.local_center));
+  const bool taylor = arms_p.kept && arms_q.kept;
+  const Calc rate_error = closing_error + 8 * kUnitRoundoff * turning;
+  const Calc curvature =
+      (wp * wp * reach_of(pl, widen(sp.local_center)) + wq * wq * reach_of(ql, widen(sq.local_center))) *
+      (1 + kMotionBoundSlack);
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
-    const Core p = posed_core(pl, sweep_pose(sp, s)), q = posed_core(ql, sweep_pose(sq, s));
-    if (s == 0 && cores_intersect(p, q)) return hit_overlapping(p, q, s, step);
+    const SweepPose xp = sweep_pose(sp, s), xq = sweep_pose(sq, s);
+    const Core p = posed_core(pl, xp), q = posed_core(ql, xq);
+    // The posed faces' normals: the kept local ones turned by the pose (unit to a few roundings, well inside
+    // target), from p toward q.
+    const auto each_axis = [&](auto&& f) {
+      if (fp.complete) {
+        for (std::size_t i = 0; i < fp.count; ++i) f(turned(xp.rotation, fp.normal[i]));
+      } else {
+        for_each_face(p, [&](const Vec2c& n, unsigned) { f(n); });
+      }
+      if (fq.complete) {
+        for (std::size_t i = 0; i < fq.count; ++i) f(Vec2c(-turned(xq.rotation, fq.normal[i])));
+      } else {
+        for_each_face(q, [&](const Vec2c& n, unsigned) { f(Vec2c(-n)); });
+      }
+    };
+    // Along each axis the larger of two safe steps: the separation falling at the bound on all motion along it,
+    // and at the leads' Taylor bound (which follows the points that can touch).
+    const auto safe_along = [&](const Vec2c& n) {
+      const Calc separation = separation_along(p, q, n) - skin;
+      const Calc closing = std::max(n.dot(v), Calc(0)) + turning + closing_error;
+      if (!(separation > target)) return Calc(0);
+      const Calc linear = (separation - target) / closing;  // +inf when still
+      if (!taylor) return linear;
+      const Lead lp = lead_along(p, arms_p, xp.rotation, n, vp, wp);
+      const Lead lq = lead_along(q, arms_q, xq.rotation, Vec2c(-n), vq, wq);
+      return std::max(linear, lead_step(separation - target, lp, lq, rate_error, curvature));
+    };
+    Calc ds = 0;
+    each_axis([&](const Vec2c& n) { ds = std::max(ds, safe_along(n)); });
+    if (s == 0 && !(ds > 0) && cores_intersect(p, q)) return hit_overlapping(p, q, s, step);
     const Closest cl = closest_points(p, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
-    if (gap <= 2 * target) return hit_between(p, q, cl, s, step);
-    const Vec2c n = best_axis(p, q, cl);
-    const Calc separation = separation_along(p, q, n);
-    const Calc closing = std::max(n.dot(vp - vq), Calc(0)) + turning + closing_error;
-    Calc ds = separation > target ? (separation - target) / closing : Calc(0);  // +inf when still
+    const auto hit = [&] { return hit_between(p, q, cl, s, step, best_axis(p, q, cl, each_axis)); };
+    if (gap <= 2 * target) return hit();
+    const Vec2c n = unit_of(cl.on_q - cl.on_p);
+    if (n != Vec2c::Zero()) ds = std::max(ds, safe_along(n));
     if (!(ds > 0)) ds = (gap - target) / speed;
-    if (!(ds > 0)) return hit_between(p, q, cl, s, step);
+    if (!(ds > 0)) return hit();
     if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;
-    if (!(next > s)) return hit_between(p, q, cl, s, step);
+    if (!(next > s)) return hit();
     s = next;
   }
   return CoreCast{CastOutcome::IterationLimit, s, Vec2c::Zero(), Vec2c::Zero(), kCastMaxIterations};
@@ -196,7 +333,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc toi_tolerance(const
   const Calc speed = detail::toi_speed(a, sa, b, sb);
   return 3 * detail::advance_target(detail::toi_scale(a, sa, b, sb)) +
          2 * Calc(std::numeric_limits<T>::epsilon()) * speed * static_cast<Calc>(max_t) +
-         2 * Calc(std::numeric_limits<T>::denorm_min()) * speed;
+         2 * Calc(std::numeric_limits<T>::denorm_min()) * speed + 2 * (placement_tolerance(a) + placement_tolerance(b));
 }
 
 /// The first time in [0, max_t] (max_t <= 1) at which shape a, stored in its body's local frame
@@ -212,11 +349,12 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
     return detail::invalid_cast<T>();
   }
   const Calc target = detail::advance_target(detail::toi_scale(a, sweep_a, b, sweep_b));
+  const Calc skin = placement_tolerance(a) + placement_tolerance(b);
   const detail::CoreCast best =
       detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
         return detail::core_before(q, p)
-                   ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target))
-                   : detail::advance_swept(p, sweep_a, q, sweep_b, until, target);
+                   ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target, skin))
+                   : detail::advance_swept(p, sweep_a, q, sweep_b, until, target, skin);
       });
   return detail::to_result<T>(best, s_max);
 }

@@ -10,6 +10,7 @@
 #include "collide/shape_traits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -57,34 +58,60 @@ inline Calc separation_along(const Core& p, const Core& q, const Vec2c& n) noexc
   return -support(q, -n) - support(p, n) - p.radius - q.radius;
 }
 
-/// The direction that separates the cores best among the closest-point direction and every face
-/// normal (from p toward q). At a small gap the closest points are only a few roundings apart and
-/// their direction is off by up to about rounding / gap; a face normal is exact to rounding, and
-/// for a face nearest a vertex it separates as well as the gap itself. (Along a direction off by
-/// 2e-4 rad, a sliver 128 long can show a negative separation at a gap of 5e-7.)
-inline Vec2c best_axis(const Core& p, const Core& q, const Closest& cl) {
+/// The unit outward face normals of a core (for_each_face), computed once and kept while the core
+/// only moves or turns; a core with more than 8 faces is not kept (complete = false).
+struct KeptFaces {
+  std::array<Vec2c, 8> normal;
+  std::size_t count = 0;
+  bool complete = true;
+};
+
+inline KeptFaces kept_faces(const Core& c) {
+  KeptFaces k;
+  for_each_face(c, [&](const Vec2c& n, unsigned) {
+    if (k.count < k.normal.size()) {
+      k.normal[k.count++] = n;
+    } else {
+      k.complete = false;
+    }
+  });
+  return k;
+}
+
+/// Calls f(n) with each face normal of c: the kept ones, or recomputed when they were not all kept.
+template <class F>
+void for_each_kept_face(const KeptFaces& k, const Core& c, F&& f) {
+  if (!k.complete) return for_each_face(c, [&](const Vec2c& n, unsigned) { f(n); });
+  for (std::size_t i = 0; i < k.count; ++i) f(k.normal[i]);
+}
+
+/// The direction that separates the cores best among the closest-point direction and the axes
+/// each_axis(f) lists (every face normal, from p toward q). At a small gap the closest points are
+/// only a few roundings apart and their direction is off by up to about rounding / gap; a face
+/// normal is exact to rounding, and for a face nearest a vertex it separates as well as the gap
+/// itself. (Along a direction off by 2e-4 rad, a sliver 128 long can show a negative separation
+/// at a gap of 5e-7.)
+template <class Axes>
+Vec2c best_axis(const Core& p, const Core& q, const Closest& cl, Axes&& each_axis) {
   Vec2c best = unit_of(cl.on_q - cl.on_p);
   if (best == Vec2c::Zero()) best = Vec2c(1, 0);
   Calc best_sep = separation_along(p, q, best);
-  for_each_face(p, [&](const Vec2c& n, unsigned) {
+  each_axis([&](const Vec2c& n) {
     const Calc sep = separation_along(p, q, n);
     if (sep > best_sep) best_sep = sep, best = n;
-  });
-  for_each_face(q, [&](const Vec2c& n, unsigned) {
-    const Calc sep = separation_along(p, q, -n);
-    if (sep > best_sep) best_sep = sep, best = -n;
   });
   return best;
 }
 
-/// Hit at time s for cores p, q (already moved there) that are apart: the normal of
-/// best_axis(), the point midway between the closest points of the two surfaces.
-inline CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Calc s, int iterations) {
+/// Hit at time s for cores p, q (already moved there) that are apart, with the given normal
+/// (best_axis()) and the point midway between the closest points of the two surfaces.
+inline CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Calc s, int iterations,
+                            const Vec2c& normal) {
   CoreCast out;
   out.outcome = CastOutcome::Hit;
   out.s = s;
   out.iterations = iterations;
-  out.normal = best_axis(p, q, cl);
+  out.normal = normal;
   // The surface points lie along the closest points' own direction (accurate whenever the radii
   // are not small next to the rounding; with small radii it hardly matters).
   Vec2c d = unit_of(cl.on_q - cl.on_p);
