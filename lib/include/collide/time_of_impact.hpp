@@ -235,7 +235,8 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc wp = static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0);
   const Calc wq = static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0);
   const Arms arms_p = arms_of(pl, widen(sp.local_center)), arms_q = arms_of(ql, widen(sq.local_center));
-  const bool taylor = arms_p.kept && arms_q.kept;
+  // Without a turn every point moves at the centre's velocity and the Taylor bound is the linear one.
+  const bool taylor = arms_p.kept && arms_q.kept && (wp != 0 || wq != 0);
   const Calc rate_error = closing_error + 8 * kUnitRoundoff * turning;
   const Calc curvature =
       (wp * wp * reach_of(pl, widen(sp.local_center)) + wq * wq * reach_of(ql, widen(sq.local_center))) *
