@@ -255,9 +255,8 @@ FaceExcess face_excess(const Vec2c& c, Calc r, const ConvexPolygon<T>& b, Normal
 /// Circle against a polygon of at most 8 vertices, on its vertices and edge normals (cached, or
 /// computed when asked), by the face the centre lies least deep behind or farthest beyond
 /// (face_excess()): with the centre inside, that face is the reference face; outside, the closest
-/// point of the boundary lies on it or at one of its ends (every excess is at most the distance,
-/// and the closest feature's faces attain it). Kept out of line, so that circle_beyond_a_face()
-/// before it inlines into the caller.
+/// point of the boundary. Kept out of line, so that circle_beyond_a_face() before it inlines into
+/// the caller.
 template <Scalar T>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
                                                                     Calc speculative) {
@@ -273,7 +272,6 @@ template <Scalar T>
   const unsigned face = fe.face;
   if (!(fe.scale >= kTinyCore)) return contact_generic(a, b, speculative);
   const Calc band = band_of(fe.scale);
-  const Vec2c v1 = widen(b[face]), v2 = widen(b[(face + 1) % m]);
   const Vec2c n = normal(face);
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
@@ -291,12 +289,15 @@ template <Scalar T>
     out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
     return out;
   }
-  // The closest point: an end of the face when the centre projects beyond it, else on the face.
-  const Vec2c d = v2 - v1;
-  const bool before = (c - v1).dot(d) <= 0, after = !before && (c - v2).dot(d) >= 0;
-  const Vec2c q = before ? v1 : after ? v2 : Vec2c(c - n * excess);
-  const Vec2c dq = q - c;
-  const Calc dist = before || after ? norm_of(dq) : excess, gap = dist - r;
+  // The closest point of the boundary lies on the face of largest excess or a neighbour: every
+  // excess is at most the distance, and the closest feature's faces attain it.
+  std::array<Vec2c, ConvexPolygon<T>::kInline> v;
+  for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
+  Closest cl;
+  closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
+                             face + m - 1, 3);
+  const Vec2c dq = cl.on_q - cl.on_p;
+  const Calc dist = norm_of(dq), gap = dist - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
   if (!overlapping) return speculative_or_none();
   if (!(dist > band)) {
@@ -305,14 +306,11 @@ template <Scalar T>
     return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
   }
   // As contact_from_closest(): the normal along the closest points, one point midway.
-  out.normal = before || after ? direction_of(dq, dist) : Vec2c(-n);
+  out.normal = direction_of(dq, dist);
   out.depth = std::max(Calc(0), r - dist);
-  out.points[0] = ((c + out.normal * r) + q) * 0.5;
+  out.points[0] = ((c + out.normal * r) + cl.on_q) * 0.5;
   out.separations[0] = gap;
-  const CoreFeature feature_q = before  ? CoreFeature{face, false}
-                                : after ? CoreFeature{unsigned((face + 1) % m), false}
-                                        : CoreFeature{face, true};
-  out.ids[0] = id_of(CoreFeature{0, false}, feature_q);
+  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
   return out;
 }
 
