@@ -195,10 +195,14 @@ std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc specu
   }
 }
 
-/// Overlapping contacts before speculative ones, then the deeper (or the nearer).
+/// Overlapping contacts before speculative ones, then the deeper (or the nearer) by more than a
+/// tie (kFaceOrderTie units of roundoff of the points' scale): child pairs equally deep up to
+/// rounding keep their order, so that the ids stay put while such a pair slides.
 inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexcept {
   if (c.overlapping != than.overlapping) return c.overlapping;
-  return c.overlapping ? c.depth > than.depth : c.separations[0] < than.separations[0];
+  const Calc tie =
+      kFaceOrderTie * kUnitRoundoff * std::max(c.points[0].cwiseAbs().maxCoeff(), than.points[0].cwiseAbs().maxCoeff());
+  return c.overlapping ? c.depth > than.depth + tie : c.separations[0] < than.separations[0] - tie;
 }
 
 /// The contact of concrete shapes, stored or placed (images, placed compounds).
@@ -263,8 +267,8 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
 }
 
 /// Contact of two shapes: present exactly when overlaps(a, b). For a compound, the deepest contact
-/// among its overlapping child pairs (the ids name the children). Coincident circle centres give
-/// normal (1, 0).
+/// among its overlapping child pairs (the ids name the children; pairs equally deep up to rounding
+/// keep their order). Coincident circle centres give normal (1, 0).
 /// Error: normal, depth, points and separations are rounded results, each within a few
 /// rounding_tolerance(a, b) of the exact values (depth of the exact depth; each separation of the
 /// exact signed distance of the surfaces along the normal at its point).

@@ -216,48 +216,72 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
   return contact_circles(a, b, sign, speculative);
 }
 
+/// The face of a polygon of at most 8 vertices that a circle's centre lies least deep behind (or
+/// farthest beyond), with its excess (the centre's signed distance to the face line) and the
+/// pair's rounding scale; apart when the centre lies beyond some face by more than the radius,
+/// the speculative distance and the band of that face's values (then the shapes are apart by more
+/// than the speculative distance, and the rest is not filled in).
+struct FaceExcess {
+  Calc excess = -std::numeric_limits<Calc>::infinity();
+  Calc scale = 0;
+  unsigned face = 0;
+  bool apart = false;
+};
+template <Scalar T, class Normal>
+FaceExcess face_excess(const Vec2c& c, Calc r, const ConvexPolygon<T>& b, Normal normal, Calc speculative) noexcept {
+  const Calc reach = r + std::max(speculative, Calc(0)), own = std::max(c.cwiseAbs().maxCoeff(), r);
+  FaceExcess out;
+  out.scale = own;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2c v = widen(b[i]);
+    const Calc e = (c - v).dot(normal(i));
+    // The excess is within a few roundings of |c| + |v_i|; tiny values underflow instead.
+    const Calc si = std::max(own, v.cwiseAbs().maxCoeff());
+    out.scale = std::max(out.scale, si);
+    if (e > reach && si >= kTinyCore && e > reach + band_of(si)) {
+      out.apart = true;
+      return out;
+    }
+    // Inside, a face equally deep up to rounding does not take over (kFaceOrderTie), so that ids
+    // stay put on a ridge; outside, the largest excess locates the closest feature.
+    if (e > out.excess + (out.excess < 0 ? kFaceOrderTie * kUnitRoundoff * si : Calc(0))) {
+      out.excess = e;
+      out.face = unsigned(i);
+    }
+  }
+  return out;
+}
+
 /// Circle against a polygon of at most 8 vertices, on its vertices and edge normals (cached, or
-/// computed when asked): the centre's excess over each face line (beyond r, the speculative
-/// distance and the band of that face's values: apart), then, with the centre inside, the face
-/// it is least deep behind, and outside, the closest point of the boundary.
-/// Kept out of line, so that the test of circle_beyond_a_face() before it inlines into the caller.
+/// computed when asked), by the face the centre lies least deep behind or farthest beyond
+/// (face_excess()): with the centre inside, that face is the reference face; outside, the closest
+/// point of the boundary. Kept out of line, so that circle_beyond_a_face() before it inlines into
+/// the caller.
 template <Scalar T>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
                                                                     Calc speculative) {
-  const std::size_t m = b.size();
-  std::array<Vec2c, ConvexPolygon<T>::kInline> v;  // widened as the faces are visited
   const Vec2c* cached = PolygonAccess::normals(b);
   const auto normal = [&](std::size_t i) {
-    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % m]));
+    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % b.size()]));
   };
+  const FaceExcess fe = face_excess(widen(a.center()), Calc(a.radius()), b, normal, speculative);
+  if (fe.apart) return std::nullopt;
+  const std::size_t m = b.size();
   const Vec2c c = widen(a.center());
-  const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0)), own = std::max(c.cwiseAbs().maxCoeff(), r);
-  Calc excess = -std::numeric_limits<Calc>::infinity(), scale = own;
-  unsigned face = 0;
-  for (std::size_t i = 0; i < m; ++i) {
-    v[i] = widen(b[i]);
-    const Calc e = (c - v[i]).dot(normal(i));
-    // The excess is within a few roundings of |c| + |v_i|; tiny values underflow instead.
-    const Calc si = std::max(own, v[i].cwiseAbs().maxCoeff());
-    scale = std::max(scale, si);
-    if (e > reach && si >= kTinyCore && e > reach + band_of(si)) return std::nullopt;
-    if (e > excess) {
-      excess = e;
-      face = unsigned(i);
-    }
-  }
-  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
-  const Calc band = band_of(scale);
+  const Calc r = a.radius(), excess = fe.excess;
+  const unsigned face = fe.face;
+  if (!(fe.scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  const Calc band = band_of(fe.scale);
+  const Vec2c n = normal(face);
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   };
+  CoreContact out;
+  out.count = 1;
   if (!(excess > 0)) {
     // The centre inside (certain when inside by more than the band): the face it is least deep
     // behind is the reference face, the centre its one incident point (as contact_from_axis()).
     if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
-    const Vec2c n = normal(face);
-    CoreContact out;
-    out.count = 1;
     out.normal = -n;
     out.depth = std::max(Calc(0), r - excess);
     out.points[0] = c + n * ((-excess - r) * 0.5);
@@ -267,6 +291,8 @@ template <Scalar T>
   }
   // The closest point of the boundary lies on the face of largest excess or a neighbour: every
   // excess is at most the distance, and the closest feature's faces attain it.
+  std::array<Vec2c, ConvexPolygon<T>::kInline> v;
+  for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
   Closest cl;
   closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
                              face + m - 1, 3);
@@ -280,8 +306,6 @@ template <Scalar T>
     return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
   }
   // As contact_from_closest(): the normal along the closest points, one point midway.
-  CoreContact out;
-  out.count = 1;
   out.normal = direction_of(dq, dist);
   out.depth = std::max(Calc(0), r - dist);
   out.points[0] = ((c + out.normal * r) + cl.on_q) * 0.5;
@@ -353,16 +377,14 @@ inline bool circle_beyond_rect(const Vec2c& c, Calc r, const Rect& k, Calc specu
   return std::max(std::fabs(sw) - k.hx * ww, std::fabs(tw) - k.hy * ww) > reach * std::max(ww, Calc(1));
 }
 
-/// Kept out of line, so that the test of circle_beyond_rect() before it inlines into the caller.
+/// scale: rect_scale() of the pair, which the caller found not apart by circle_beyond_rect() when
+/// at least kTinyCore. Kept out of line, so that that test inlines into the caller.
 template <Scalar T, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k,
-                                                                 bool proper, Calc speculative) {
+                                                                 bool proper, Calc scale, Calc speculative) {
   const Vec2c c = widen(a.center());
   const Calc r = a.radius();
-  const Calc scale = rect_scale(c, r, k);
-  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
-  if (circle_beyond_rect(c, r, k, speculative, scale)) return std::nullopt;
-  if (!proper) return contact_generic(a, b, speculative);
+  if (!(scale >= kTinyCore) || !proper) return contact_generic(a, b, speculative);
   const Calc band = band_of(scale);
   const Vec2c v = perp(k.w), d = c - k.c;
   const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
@@ -395,10 +417,15 @@ template <Scalar T, class B>
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   }
   // The face the centre is least deep behind (or, within rounding of the boundary, beyond).
-  const bool along_w = ex >= ey;
-  const unsigned face = along_w ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
-  const Vec2c n_face = (along_w ? Vec2c(k.w * (s > 0 ? 1 : -1)) : Vec2c(v * (t > 0 ? 1 : -1))) / len;
-  const Calc e = std::max(ex, ey) * len;  // the centre's excess over that face (<= 0 inside)
+  // Inside, within a tie (kFaceOrderTie) of a ridge of the box's interior, equally deep behind two
+  // faces, rounding cannot tell the faces apart: the w faces, then the negative side, win there,
+  // so that a centre moving along the ridge keeps its face and id.
+  const Calc tie = kFaceOrderTie * kUnitRoundoff * scale;
+  const bool along_w = std::max(ex, ey) > 0 ? ex >= ey : ex >= ey - tie;
+  const bool positive = along_w ? s > tie : t > tie;
+  const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
+  const Vec2c n_face = (along_w ? k.w : v) * ((positive ? 1 : -1) / len);
+  const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
   out.separations[0] = e - r;
   out.depth = std::max(Calc(0), r - e);
@@ -443,7 +470,7 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       const Vec2c c = widen(a.center());
       const Calc scale = rect_scale(c, a.radius(), k);
       if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
-      return contact_circle_rect(a, b, k, proper, speculative);
+      return contact_circle_rect(a, b, k, proper, scale, speculative);
     } else if constexpr (circle_a) {
       if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
       if (b.size() <= ConvexPolygon<scalar_of_t<A>>::kInline) return contact_circle_polygon(a, b, speculative);
