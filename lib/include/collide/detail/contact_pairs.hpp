@@ -305,11 +305,14 @@ template <Scalar T>
     const Core pc = core_of(a), pb = core_of(b);
     return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
   }
-  // As contact_from_closest(): the normal along the closest points, one point midway.
-  out.normal = direction_of(dq, dist);
-  out.depth = std::max(Calc(0), r - dist);
+  // As contact_from_closest(): inside a face its normal (see closest_normal()), at a vertex the
+  // direction to it; one point midway.
+  const bool on_face = cl.feature_q.edge;
+  out.normal = on_face ? Vec2c(-normal(cl.feature_q.index)) : direction_of(dq, dist);
+  const Calc along = on_face ? dq.dot(out.normal) : dist;
+  out.depth = std::max(Calc(0), r - along);
   out.points[0] = ((c + out.normal * r) + cl.on_q) * 0.5;
-  out.separations[0] = gap;
+  out.separations[0] = along - r;
   out.ids[0] = id_of(cl.feature_p, cl.feature_q);
   return out;
 }
@@ -398,17 +401,16 @@ template <Scalar T, class B>
     const Vec2c q = k.c + k.w * cs + v * ct;
     const Vec2c dq = q - c;
     const Calc dist = norm_of(dq), gap = dist - r;
-    const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
-    if (!overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
-    if (dist > band) {
-      // Feature: a corner when both coordinates were clamped, else the side beyond which c lies.
+    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
+    if (ex > 0 && ey > 0 && dist > band) {
+      // Beyond a corner: the direction to it. Beyond one side, that side's normal (below): the
+      // closest point's rounding at the box's scale would tilt the normal by about rounding /
+      // dist, and a deep push along it would fall short of clearing the flat side.
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
-      const unsigned side = ex > 0 ? (s > 0 ? 1u : 3u) : (t > 0 ? 2u : 0u);
-      out.ids[0] =
-          id_of(CoreFeature{0, false}, ex > 0 && ey > 0 ? CoreFeature{corner, false} : CoreFeature{side, true});
+      out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{corner, false});
       out.normal = direction_of(dq, dist);
-      out.overlapping = overlapping;
-      out.separations[0] = overlapping ? gap : std::max(gap, Calc(0));
+      out.separations[0] = out.overlapping ? gap : std::max(gap, Calc(0));
       out.depth = std::max(Calc(0), -out.separations[0]);
       out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
       return out;
@@ -416,7 +418,7 @@ template <Scalar T, class B>
   } else if (!(std::max(ex, ey) * len < -band) && !decide_exactly(a, b)) {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   }
-  // The face the centre is least deep behind (or, within rounding of the boundary, beyond).
+  // The face the centre is least deep behind or lies beyond (its excess the largest).
   // Inside, within a tie (kFaceOrderTie) of a ridge of the box's interior, equally deep behind two
   // faces, rounding cannot tell the faces apart: the w faces, then the negative side, win there,
   // so that a centre moving along the ridge keeps its face and id.
@@ -427,8 +429,8 @@ template <Scalar T, class B>
   const Vec2c n_face = (along_w ? k.w : v) * ((positive ? 1 : -1) / len);
   const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
-  out.separations[0] = e - r;
-  out.depth = std::max(Calc(0), r - e);
+  out.separations[0] = out.overlapping ? e - r : std::max(e - r, Calc(0));
+  out.depth = std::max(Calc(0), -out.separations[0]);
   out.points[0] = c + n_face * ((-e - r) * 0.5);
   out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
   return out;
