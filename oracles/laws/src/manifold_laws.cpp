@@ -339,7 +339,7 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
     // The move is (3, 4) times a power of two, so that it adds exactly to the stored positions
     // (exact_move): only then does the motion from b - t to b + t pass through b itself.
     // Its length follows the shapes' size (their coordinates' magnitude when both are points), so
-    // that the move stays tiny next to them; a move that rounds at large coordinates is not used.
+    // that the move stays tiny next to them.
     const auto side = [](const Aabb<T>& x) {
       return std::max(double(x.max().x() - x.min().x()), double(x.max().y() - x.min().y()));
     };
@@ -347,7 +347,17 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
     const double scale =
         size > 0 ? size : std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
     if (!(scale > 0) || !std::isfinite(scale)) return;
-    const T quarter = static_cast<T>(std::ldexp(1.0, std::ilogb(scale) - 20));
+    // At least T's spacing at b's largest coordinate, so that 3 and 4 times it add exactly to
+    // b's stored positions (a sum crossing a power of two may still round: exact_move checks);
+    // up to 2^-12 of the size, beyond which the move is not tiny next to the shapes: not used.
+    const double reach = ::collide::detail::scale_of(bounds(b));
+    const int want = std::ilogb(scale) - 20;
+    const int spacing = reach > 0 ? std::ilogb(reach) - std::numeric_limits<T>::digits + 1 : want;
+    if (spacing > want + 8) {
+      j.v.account += "; move rounds";
+      return;
+    }
+    const T quarter = static_cast<T>(std::ldexp(1.0, std::max(want, spacing)));
     if (!(quarter > 0) || !std::isfinite(double(quarter))) return;
     const Vec2<T> t(T(3) * quarter, T(4) * quarter);
     const auto plus = moved(b, Vec2<T>(t)), minus = moved(b, Vec2<T>(-t));

@@ -300,9 +300,10 @@ Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
 /// existing child, vertex or edge of each shape, lying within the shape's radius + bound + 4 depth
 /// of that shape's surface point (a vertex counts with its adjacent edges, along which a clipped
 /// point slides); two points have different ids; and stability: with b moved by +t and by -t
-/// (t = 2^(ilogb S - 20) (3, 4), S the larger bounding-box side, or the pair's scale for two
-/// points; only moves that add exactly to every stored
-/// position count, so that the motion passes through b), when both moved pairs give contacts with the same
+/// (t = 2^k (3, 4), k = ilogb S - 20 with S the larger bounding-box side, or the pair's scale for
+/// two points, raised up to 8 to T's spacing at b's coordinates; only moves that add exactly to
+/// every stored position count, so that the motion passes through b), when both moved pairs give
+/// contacts with the same
 /// ids and point count, the unmoved pair gives those ids too (the features did not change on the
 /// way), unless a compound's unmoved pair has the child pair the moves name tied for the deepest
 /// within the bound (the contract's deepest child pair is either then: a tie that holds at the
