@@ -243,8 +243,9 @@ FaceExcess face_excess(const Vec2c& c, Calc r, const ConvexPolygon<T>& b, Normal
       return out;
     }
     // Inside, a face equally deep up to rounding does not take over (kFaceOrderTie), so that ids
-    // stay put on a ridge; outside, the largest excess locates the closest feature.
-    if (e > out.excess + (out.excess < 0 ? kFaceOrderTie * kUnitRoundoff * si : Calc(0))) {
+    // stay put on a ridge; a face the centre lies beyond always does, and outside, the largest
+    // excess locates the closest feature.
+    if (e > out.excess + (out.excess < 0 && e < 0 ? kFaceOrderTie * kUnitRoundoff * si : Calc(0))) {
       out.excess = e;
       out.face = unsigned(i);
     }
