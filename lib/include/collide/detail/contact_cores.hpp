@@ -57,10 +57,11 @@ inline Calc point_scale(const Core& p, const Core& q) noexcept {
 }
 
 /// The unit normal of two cores' closest points cl (from p toward q) and their distance along it.
-/// When a closest point lies inside a face, that face's normal: exact to the rounding of the
-/// face's direction, where the points' own offset is off by the rounding of their coordinates,
-/// and over a short offset and a deep overlap that tilt would push a shape off a flat face short
-/// of clearing it. Else the points' own direction (two vertices: the tilt then costs little).
+/// When a closest point lies inside a face at least as long as the offset, that face's normal:
+/// its direction is off by the rounding of its ends over its length, the offset's by the same
+/// rounding over the offset's length, and over a short offset and a deep overlap that tilt would
+/// push a shape off a flat face short of clearing it. Else the points' own direction (at two
+/// vertices the tilt costs little; a face shorter than the offset is the less certain one).
 struct ClosestNormal {
   Vec2c normal;
   Calc distance;
@@ -71,6 +72,7 @@ inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest&
     if (!f.edge || c.size() < 2) continue;
     const std::size_t i = c.size() == 2 ? 0 : f.index;  // a segment's sides share its one edge
     const Vec2c e = c[i + 1 < c.size() ? i + 1 : 0] - c[i];
+    if (e.squaredNorm() < d.squaredNorm()) continue;
     Vec2c n = unit_of(Vec2c(e.y(), -e.x()));
     if (n.dot(d) < 0) n = -n;
     if (n != Vec2c::Zero()) return {n, d.dot(n)};
