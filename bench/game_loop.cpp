@@ -4,6 +4,8 @@
 //   2. broadphase: each body's bounding box under its pose moved in a dynamic tree, then the pairs
 //      of overlapping boxes found, each once, by each library's own means (collide: the tree's
 //      for_each_pair; Box2D: a tree query per body, as its b2BroadPhase does for moved proxies);
+//      collide's loop runs a second time on sort and sweep, the structure that suits many
+//      similar bodies moving coherently;
 //   3. narrowphase: a contact manifold for every candidate pair.
 // collide: local shapes with Transform<float>, DynamicTree, contact(a, xa, b, xb). Box2D 2.4.1:
 // b2Shape with b2Transform, b2DynamicTree, b2Collide* (polygon skin radius 0, capsules as 2-gons
@@ -25,6 +27,7 @@
 #include <memory>
 #include <numbers>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -32,6 +35,7 @@ namespace bench {
 namespace {
 
 namespace bp = collide::broadphase;
+using Tree = bp::DynamicTree<float>;
 using V = collide::Vec2<float>;
 /// This thread's CPU time: on a shared machine wall time would count other processes' work.
 struct Clock {
@@ -149,6 +153,15 @@ void advance(std::vector<V>& p, std::vector<V>& v, std::vector<float>& a, const 
   }
 }
 
+template <class Broadphase>
+Broadphase make_broadphase() {
+  if constexpr (std::is_same_v<Broadphase, Tree>) {
+    return Broadphase(0.1f);  // Box2D 2.4.1's b2_aabbMargin
+  } else {
+    return Broadphase();
+  }
+}
+
 /// Per-frame milliseconds of each phase, and what the loop found (for the cross-check).
 struct Timings {
   double transforms = 0, broadphase = 0, narrowphase = 0;
@@ -159,13 +172,16 @@ double ms(Clock::time_point a, Clock::time_point b) {
   return 1e3 * (b - a);
 }
 
+/// collide's loop over a broadphase structure: the dynamic tree (fat boxes, moved by move_fat) or
+/// sort and sweep (exact boxes).
+template <class Broadphase>
 Timings run_collide(const Scene& s, int frames = kFrames) {
   const std::size_t n = s.shapes.size();
   std::vector<V> p = s.position, v = s.velocity;
   std::vector<float> a = s.angle;
   std::vector<collide::Transform<float>> xf(n);
   std::vector<collide::Aabb<float>> box(n, collide::Aabb<float>(V(0, 0), V(0, 0)));
-  bp::DynamicTree<float> tree(0.1f);
+  Broadphase tree = make_broadphase<Broadphase>();
   std::vector<bp::ProxyId> id(n);
   for (std::size_t i = 0; i < n; ++i) {
     xf[i] = collide::Transform<float>::make(p[i], a[i]).value();
@@ -180,7 +196,11 @@ Timings run_collide(const Scene& s, int frames = kFrames) {
     const auto t1 = Clock::now();
     for (std::size_t i = 0; i < n; ++i) {
       box[i] = collide::bounds(s.shapes[i], xf[i]);
-      tree.move_fat(id[i], box[i]);
+      if constexpr (std::is_same_v<Broadphase, Tree>) {
+        tree.move_fat(id[i], box[i]);
+      } else {
+        tree.move(id[i], box[i]);
+      }
     }
     pairs.clear();
     tree.for_each_pair([&](bp::ProxyId x, bp::ProxyId y) {
@@ -298,7 +318,13 @@ bool register_game_loop() {
     const std::shared_ptr<Scene> scene = make_scene(n);
     // Cross-check on the first 30 frames: the two libraries find nearly the same contacts (a
     // pair touching within rounding may go either way; Box2D's tree pads boxes differently).
-    const Timings c = run_collide(*scene, 30), b = run_box2d(*scene, 30);
+    const Timings c = run_collide<Tree>(*scene, 30), b = run_box2d(*scene, 30);
+    const Timings sweep = run_collide<bp::SweepAndPrune<float>>(*scene, 30);
+    if (sweep.candidates != c.candidates || sweep.contacts != c.contacts) {
+      std::fprintf(stderr, "game_loop/%zu: sort and sweep found %zu pairs and %zu contacts, the tree %zu and %zu\n", n,
+                   sweep.candidates, sweep.contacts, c.candidates, c.contacts);
+      agreed = false;
+    }
     const double diff = std::fabs(double(c.contacts) - double(b.contacts));
     if (c.contacts == 0 || diff > 0.01 * double(b.contacts)) {
       std::fprintf(stderr, "game_loop/%zu: collide found %zu contacts in 30 frames, Box2D %zu\n", n, c.contacts,
@@ -309,7 +335,14 @@ bool register_game_loop() {
                  c.contacts, b.contacts, c.points, b.points);
     benchmark::RegisterBenchmark(("game_loop/collide/" + std::to_string(n)).c_str(),
                                  [scene](benchmark::State& st) {
-                                   for (auto _ : st) report(st, run_collide(*scene));
+                                   for (auto _ : st) report(st, run_collide<Tree>(*scene));
+                                 })
+        ->Iterations(1)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("game_loop/collide_sweep/" + std::to_string(n)).c_str(),
+                                 [scene](benchmark::State& st) {
+                                   for (auto _ : st) report(st, run_collide<bp::SweepAndPrune<float>>(*scene));
                                  })
         ->Iterations(1)
         ->UseManualTime()

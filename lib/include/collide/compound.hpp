@@ -7,12 +7,35 @@
 #include "collide/transform.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
 
 namespace collide {
+
+namespace detail {
+/// A U not above v, at most three units in the last place below it: v rounded to nearest when
+/// that is not above, else v lowered by 1 to 2 units (|v| eps_U, plus U's smallest subnormal)
+/// and then rounded, which half a unit cannot lift back above v. Picked by a mask, not a
+/// branch: which way the rounding goes is a coin flip.
+template <Scalar U>
+U round_down_to(Calc v) noexcept {
+  const U nearest = static_cast<U>(v);
+  if constexpr (std::is_same_v<U, Calc>) {
+    return nearest;
+  } else {
+    static_assert(sizeof(U) == sizeof(std::uint32_t));
+    const U below = static_cast<U>(v - std::fabs(v) * Calc(std::numeric_limits<U>::epsilon()) -
+                                   Calc(std::numeric_limits<U>::denorm_min()));
+    const std::uint32_t keep = 0u - std::uint32_t(static_cast<Calc>(nearest) <= v);
+    return std::bit_cast<U>((std::bit_cast<std::uint32_t>(nearest) & keep) |
+                            (std::bit_cast<std::uint32_t>(below) & ~keep));
+  }
+}
+}  // namespace detail
 
 /// Rounds a box computed in Calc outward to T, after padding it by the rounding of the few
 /// operations that computed it, so the result is never smaller than the exact box.
@@ -21,12 +44,8 @@ Aabb<U> bounds_from_calc(const Vec2c& lo, const Vec2c& hi) noexcept {
   Vec2<U> out_lo, out_hi;
   for (int i = 0; i < 2; ++i) {
     const Calc pad = 8 * kUnitRoundoff * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + kSmallestDouble;
-    const Calc l = lo[i] - pad, h = hi[i] + pad;
-    U fl = static_cast<U>(l), fh = static_cast<U>(h);
-    if (static_cast<Calc>(fl) > l) fl = std::nextafter(fl, -std::numeric_limits<U>::infinity());
-    if (static_cast<Calc>(fh) < h) fh = std::nextafter(fh, std::numeric_limits<U>::infinity());
-    out_lo[i] = fl;
-    out_hi[i] = fh;
+    out_lo[i] = detail::round_down_to<U>(lo[i] - pad);
+    out_hi[i] = -detail::round_down_to<U>(-(hi[i] + pad));
   }
   return Aabb<U>(detail::Unchecked{}, out_lo, out_hi);
 }

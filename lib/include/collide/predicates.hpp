@@ -263,6 +263,29 @@ inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noex
   return exact_sign_of_sum(terms);
 }
 
+/// orient() where its filter cannot tell: kept out of line, so that the filter inlines.
+[[gnu::noinline]] inline int orient_beyond_filter(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
+  const double m = std::max(
+      {std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()), std::fabs(c.x()), std::fabs(c.y())});
+  if (m == 0.0) return 0;
+  ++exact_evaluations;
+  // The expansion needs every non-zero coordinate within kExpansionSpread of the largest.
+  double lo = m;
+  for (const double v : {a.x(), a.y(), b.x(), b.y(), c.x(), c.y()}) {
+    if (v != 0.0) lo = std::min(lo, std::fabs(v));
+  }
+  if (lo < kExpansionSpread * m) {
+    const Exact ax(a.x()), ay(a.y());
+    return ((Exact(b.x()) - ax) * (Exact(c.y()) - ay) - (Exact(b.y()) - ay) * (Exact(c.x()) - ax)).sign();
+  }
+  int e = 0;
+  static_cast<void>(std::frexp(m, &e));  // m in [2^(e-1), 2^e)
+  const int k = 510 - e;
+  if (k == 0) return orient_expansion(a, b, c);
+  auto s = [k](const Vec2c& v) { return Vec2c(std::ldexp(v.x(), k), std::ldexp(v.y(), k)); };
+  return orient_expansion(s(a), s(b), s(c));
+}
+
 }  // namespace detail
 
 /// Sign of the turn a -> b -> c: +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear.
@@ -286,26 +309,7 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
-  const double m = std::max(
-      {std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y()), std::fabs(c.x()), std::fabs(c.y())});
-  if (m == 0.0) return 0;
-  ++detail::exact_evaluations;
-  // The expansion needs every non-zero coordinate within kExpansionSpread of the largest.
-  double lo = m;
-  for (const double v : {a.x(), a.y(), b.x(), b.y(), c.x(), c.y()}) {
-    if (v != 0.0) lo = std::min(lo, std::fabs(v));
-  }
-  if (lo < kExpansionSpread * m) {
-    using detail::Exact;
-    const Exact ax(a.x()), ay(a.y());
-    return ((Exact(b.x()) - ax) * (Exact(c.y()) - ay) - (Exact(b.y()) - ay) * (Exact(c.x()) - ax)).sign();
-  }
-  int e = 0;
-  static_cast<void>(std::frexp(m, &e));  // m in [2^(e-1), 2^e)
-  const int k = 510 - e;
-  if (k == 0) return detail::orient_expansion(a, b, c);
-  auto s = [k](const Vec2c& v) { return Vec2c(std::ldexp(v.x(), k), std::ldexp(v.y(), k)); };
-  return detail::orient_expansion(s(a), s(b), s(c));
+  return detail::orient_beyond_filter(a, b, c);
 }
 
 /// 2D cross product (z component), computed in Calc.

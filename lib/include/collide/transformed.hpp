@@ -80,6 +80,25 @@ decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
   }
 }
 
+/// The box of s's computed image under x, before any padding. A polygon's is the box of its
+/// mapped vertices, which holds whatever its image is (their hull, or two of them) without
+/// building that image.
+template <class S, Scalar T>
+Aabb<Calc> image_box(const S& s, const Transform<T>& x) {
+  if constexpr (std::is_same_v<S, ConvexPolygon<T>>) {
+    const Pose pose = x.pose();
+    Vec2c lo = image_point(pose, widen(s[0])), hi = lo;
+    for (std::size_t k = 1; k < s.size(); ++k) {
+      const Vec2c p = image_point(pose, widen(s[k]));
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    return AabbAccess::unchecked<Calc>(lo, hi);
+  } else {
+    return with_placed(s, x, [](const auto& img) { return calc_bounds(img); });
+  }
+}
+
 /// Calls f(a placed, b placed) for any two shapes (variants visited first).
 template <class A, class B, Scalar T, class F>
 decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
@@ -129,12 +148,10 @@ template <AnyShape S>
 Aabb<scalar_of_t<S>> bounds(const S& s, const Transform<scalar_of_t<S>>& x) {
   using T = scalar_of_t<S>;
   if (x.is_identity()) return bounds(s);
-  const Calc tol = transform_tolerance(s, x);
   return detail::visit_shape(s, [&](const auto& c) {
-    return detail::with_placed(c, x, [&](const auto& img) {
-      const Aabb<Calc> b = detail::calc_bounds(img);
-      return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
-    });
+    const Calc tol = detail::image_tolerance(x.pose(), detail::local_extent(c));  // transform_tolerance()
+    const Aabb<Calc> b = detail::image_box(c, x);
+    return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
   });
 }
 
