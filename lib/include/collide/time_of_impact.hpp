@@ -231,7 +231,7 @@ BodyMotion body_motion(const Sweep<T>& sw, Calc s) noexcept {
 /// How fast the points of the posed core o may leave the frame of a body f that turns (a face's normal and
 /// support turn with f): in f's frame each point x of o moves with rate of separation
 /// n . (v_o - v_f + w_o J (x - c_o) - w_f J (x - c_f)) along a face's unit normal n now, and its second derivative
-/// is at most curvature = w_o^2 reach_o + 2 |w_f| U + w_f^2 (D + U remaining) until s_max (U bounds the speed of
+/// is at most curvature = w_o^2 reach_o + 2 |w_f| U + w_f^2 (D + U remaining) up to time 1 (U bounds the speed of
 /// o's points relative to c_f, D their distance from it now); rate_error bounds the rounding of the rates (the
 /// offsets of o's points from either centre are differences of coordinates up to m in magnitude).
 struct TurningFrame {
@@ -335,42 +335,39 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
       const Lead lq = lead_along(q, arms_q, xq.rotation, Vec2c(-n), vq, wq);
       return std::max(linear, lead_step(separation - target, lp, lq, rate_error, curvature));
     };
-    // A face's normal turns with its body: the larger of the linear step along it now and the bound that
-    // follows the face as it turns (turning_face_step()).
-    const BodyMotion mp = body_motion(sp, s), mq = body_motion(sq, s);
-    const TurningFrame in_p = turning_frame(q, mp, mq, reach_q, rate_error, s_max - s);
-    const TurningFrame in_q = turning_frame(p, mq, mp, reach_p, rate_error, s_max - s);
-    // The face separating most is kept (widest): where it meets a vertex over it, their distance is the gap.
+    // Every face's linear step, and the face separating most (widest). A face's normal turns with its body:
+    // along the widest, the bound that follows the face as it turns (turning_face_step()) as well; where it
+    // meets a vertex over it, their distance is the gap.
     FaceAxis widest;
-    Calc widest_separation = -std::numeric_limits<Calc>::infinity();
-    const auto face_of_p = [&](const Vec2c& n, unsigned i) {
-      const Calc separation = separation_along(p, q, n) - skin;
-      if (separation > widest_separation) widest_separation = separation, widest = FaceAxis{0, i, n};
-      const Calc linear = linear_along(n, separation);
-      if (!(linear > 0)) return linear;
-      return std::max(linear, turning_face_step(p, mp, q, mq, in_p, n, r, target));
+    Calc widest_separation = -std::numeric_limits<Calc>::infinity(), ds = 0;
+    const auto face = [&](const FaceAxis& axis) {
+      const Calc separation = separation_along(p, q, axis.normal) - skin;
+      if (separation > widest_separation) widest_separation = separation, widest = axis;
+      ds = std::max(ds, linear_along(axis.normal, separation));
     };
-    const auto face_of_q = [&](const Vec2c& m, unsigned i) {  // m outward from q: the axis from p toward q is -m
-      const Calc separation = separation_along(p, q, Vec2c(-m)) - skin;
-      if (separation > widest_separation) widest_separation = separation, widest = FaceAxis{1, i, Vec2c(-m)};
-      const Calc linear = linear_along(Vec2c(-m), separation);
-      if (!(linear > 0)) return linear;
-      return std::max(linear, turning_face_step(q, mq, p, mp, in_q, m, r, target));
-    };
-    Calc ds = 0;
     if (fp.complete) {
-      for (std::size_t i = 0; i < fp.count; ++i) {
-        ds = std::max(ds, face_of_p(turned(xp.rotation, fp.normal[i]), fp.index[i]));
-      }
+      for (std::size_t i = 0; i < fp.count; ++i) face(FaceAxis{0, fp.index[i], turned(xp.rotation, fp.normal[i])});
     } else {
-      for_each_face(p, [&](const Vec2c& n, unsigned i) { ds = std::max(ds, face_of_p(n, i)); });
+      for_each_face(p, [&](const Vec2c& n, unsigned i) { face(FaceAxis{0, i, n}); });
     }
     if (fq.complete) {
       for (std::size_t i = 0; i < fq.count; ++i) {
-        ds = std::max(ds, face_of_q(turned(xq.rotation, fq.normal[i]), fq.index[i]));
+        face(FaceAxis{1, fq.index[i], Vec2c(-turned(xq.rotation, fq.normal[i]))});
       }
     } else {
-      for_each_face(q, [&](const Vec2c& m, unsigned i) { ds = std::max(ds, face_of_q(m, i)); });
+      for_each_face(q, [&](const Vec2c& m, unsigned i) { face(FaceAxis{1, i, Vec2c(-m)}); });
+    }
+    if (ds > 0) {
+      // Bounded up to time 1, not s_max: a pair's steps must not depend on how far the query follows it (the
+      // earliest of the pairs before it), so that swapping the shapes gives the same bits.
+      const BodyMotion mp = body_motion(sp, s), mq = body_motion(sq, s);
+      const Calc turning_step =
+          widest.owner == 0
+              ? turning_face_step(p, mp, q, mq, turning_frame(q, mp, mq, reach_q, rate_error, 1 - s),
+                                  widest.normal, r, target)
+              : turning_face_step(q, mq, p, mp, turning_frame(p, mq, mp, reach_p, rate_error, 1 - s),
+                                  Vec2c(-widest.normal), r, target);
+      ds = std::max(ds, turning_step);
     }
     if (s == 0 && !(ds > 0) && cores_intersect(p, q)) return hit_overlapping(p, q, s, step);
     Closest cl;
