@@ -45,8 +45,10 @@
 /// axes is taken. Face normals do not turn under translation, so the faces of both cores bound
 /// the motion once, from s = 0: for two polygons they are the faces of the Minkowski difference
 /// and that one step reaches the first contact up to target (or proves a miss: a face separating
-/// that does not close). Then each step takes the closest points' direction (the gap over |w|
-/// when rounding leaves it separating by no more than target) until the gap is within 2 target.
+/// that does not close). Where that face meets a vertex over it, the vertex and its foot on the
+/// face are the closest points, found without a search (face_witness()). Then each step takes
+/// the closest points' direction (the gap over |w| when rounding leaves it separating by no more
+/// than target) until the gap is within 2 target.
 /// The start needs no separate test: shapes that overlap stop at s = 0, and contact() gives them
 /// their normal and point.
 
@@ -75,6 +77,39 @@ inline Core moved_core(const Core& c, const Vec2c& v) {
   return out;
 }
 
+/// A face of one of two cores: its owner (0: the first, 1: the second), its index (for_each_face()) and
+/// its unit normal from the first core toward the second.
+struct FaceAxis {
+  int owner = -1;
+  unsigned index = 0;
+  Vec2c normal = Vec2c::Zero();
+};
+
+/// The closest points of the cores p and q (apart) when the point of the other core deepest along the
+/// face's normal has its foot on the face: that point and its foot (the separation along the face is then
+/// the gap). False when the foot falls off the face (a vertex meets a vertex), the point is not outside the
+/// face, or there is no face.
+inline bool face_witness(const Core& p, const Core& q, const FaceAxis& face, Closest& out) noexcept {
+  if (face.owner < 0) return false;
+  const Core& f = face.owner == 0 ? p : q;
+  const Core& o = face.owner == 0 ? q : p;
+  const Vec2c n = face.owner == 0 ? face.normal : Vec2c(-face.normal);  // outward from f
+  const std::size_t i = f.size() == 2 ? 0 : face.index;
+  const Vec2c a = f[i], d = f[i + 1 < f.size() ? i + 1 : 0] - a;
+  std::size_t deepest = 0;
+  for (std::size_t j = 1; j < o.size(); ++j) {
+    if (o[j].dot(n) < o[deepest].dot(n)) deepest = j;
+  }
+  const Vec2c x = o[deepest];
+  const Calc dd = d.squaredNorm(), along = (x - a).dot(d);
+  if (!(dd > 0) || along < 0 || along > dd || !((x - a).dot(n) > 0)) return false;
+  const Vec2c foot = a + d * (along / dd);
+  out.dist2 = (x - foot).squaredNorm();
+  out.on_p = face.owner == 0 ? foot : x;
+  out.on_q = face.owner == 0 ? x : foot;
+  return true;
+}
+
 /// Conservative advancement of core p moving by w per unit time against the fixed core q, from
 /// s = 0 up to s_max; both dilated by skin in all (the images' distance from the exact shapes),
 /// so that the exact shapes stay apart too.
@@ -91,26 +126,36 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
   };
   // Face normals do not turn under translation: computed once, from p toward q.
   const KeptFaces fp = kept_faces(p), fq = kept_faces(q);
-  const auto each_axis = [&](auto&& f) {
-    for_each_kept_face(fp, p, f);
-    for_each_kept_face(fq, q, [&](const Vec2c& n) { f(Vec2c(-n)); });
+  const auto each_face = [&](auto&& f) {
+    for_each_kept_face(fp, p, [&](const Vec2c& n, unsigned i) { f(FaceAxis{0, i, n}); });
+    for_each_kept_face(fq, q, [&](const Vec2c& n, unsigned i) { f(FaceAxis{1, i, Vec2c(-n)}); });
   };
+  const auto each_axis = [&](auto&& f) { each_face([&](const FaceAxis& face) { f(face.normal); }); };
   const auto hit = [&](const Core& pm, const Closest& cl, Calc s, int step) {
     return hit_between(pm, q, cl, s, step, best_axis(pm, q, cl, each_axis));
   };
   // Face axes first: under translation the separation along a fixed axis falls exactly linearly,
   // so every face's bound from s = 0 holds at once and the largest is safe. For polygons these
-  // are the faces of the Minkowski difference: the largest is the first contact, up to target.
+  // are the faces of the Minkowski difference: the largest is the first contact, up to target,
+  // and its face meets the other core there (lead).
   Calc s = 0;
-  each_axis([&](const Vec2c& n) { s = std::max(s, safe_along(p, n)); });
+  FaceAxis lead;
+  each_face([&](const FaceAxis& face) {
+    const Calc ds = safe_along(p, face.normal);
+    if (ds > s) s = ds, lead = face;
+  });
   const bool apart = s > 0;
   if (apart && s >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
   for (int step = 0; step < kCastMaxIterations; ++step) {
     const Core pm = moved_core(p, w * s);
     if (!apart && step == 0 && cores_intersect(pm, q)) return hit_overlapping(pm, q, s, step);
-    const Closest cl = closest_points(pm, q);
+    // Where the leading face meets a vertex over it, their distance is the gap and the face's normal
+    // separates best: no search for the closest points.
+    Closest cl;
+    const bool on_face = step == 0 && face_witness(pm, q, lead, cl);
+    if (!on_face) cl = closest_points(pm, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
-    if (gap <= 2 * target) return hit(pm, cl, s, step);
+    if (gap <= 2 * target) return on_face ? hit_between(pm, q, cl, s, step, lead.normal) : hit(pm, cl, s, step);
     // Then the closest points' direction; when rounding leaves it separating by no more than
     // target, the gap itself falls no faster than |w|.
     const Vec2c n = unit_of(cl.on_q - cl.on_p);

@@ -36,9 +36,13 @@
 /// the centres' closing speed along n plus each body's turn rate times its reach, so the time it
 /// takes to fall to target is a safe step; and each point's coordinate along n has a second
 /// derivative of at most turn rate^2 times its arm, so a Taylor bound that follows the points
-/// near the support (their rates now) gives a second, far larger step near contact. Each step
-/// takes the largest over every face normal of both posed cores (the kept local normals turned
-/// by the pose) and the closest points' direction. Every point of a body moves at most V per
+/// near the support (their rates now) gives a second, far larger step near contact. A face's
+/// normal turns with its body, so along a face the separation is followed in that body's own
+/// frame: there the face stands still and each point of the other body has its rate now and a
+/// bounded second derivative (turn rates, relative speed and distance), a quadratic bound per
+/// point that reaches target about where the turning face meets it. Each step takes the largest
+/// over every face normal of both posed cores (the kept local normals turned by the pose) and
+/// the closest points' direction. Every point of a body moves at most V per
 /// unit of time relative to the other, so from a gap g the bodies cannot meet before
 /// (g - target) / V: the step when rounding leaves no axis separating by more than target. A
 /// compound whose children carry their own transforms is advanced on its children's images,
@@ -209,10 +213,69 @@ inline Calc lead_step(Calc room, const Lead& lp, const Lead& lq, Calc rate_error
   return h * (1 - kMotionBoundSlack);
 }
 
+/// A body's motion at one time, for the bounds of a face that turns with it: its centre of rotation now, the
+/// centre's velocity and the turn rate (per unit time).
+struct BodyMotion {
+  Vec2c center;
+  Vec2c velocity;
+  Calc turn = 0;
+};
+
+template <Scalar T>
+BodyMotion body_motion(const Sweep<T>& sw, Calc s) noexcept {
+  const Vec2c c0 = widen(sw.c0), c1 = widen(sw.c1);
+  return BodyMotion{Vec2c(c0.x() + (c1.x() - c0.x()) * s, c0.y() + (c1.y() - c0.y()) * s), c1 - c0,
+                    static_cast<Calc>(sw.a1) - static_cast<Calc>(sw.a0)};
+}
+
+/// How fast the points of the posed core o may leave the frame of a body f that turns (a face's normal and
+/// support turn with f): in f's frame each point x of o moves with rate of separation
+/// n . (v_o - v_f + w_o J (x - c_o) - w_f J (x - c_f)) along a face's unit normal n now, and its second derivative
+/// is at most curvature = w_o^2 reach_o + 2 |w_f| U + w_f^2 (D + U remaining) up to time 1 (U bounds the speed of
+/// o's points relative to c_f, D their distance from it now); rate_error bounds the rounding of the rates (the
+/// offsets of o's points from either centre are differences of coordinates up to m in magnitude).
+struct TurningFrame {
+  Calc curvature = 0;
+  Calc rate_error = 0;
+};
+
+inline TurningFrame turning_frame(const Core& o, const BodyMotion& mf, const BodyMotion& mo, Calc reach_o,
+                                  Calc rate_error, Calc remaining) noexcept {
+  Calc d = 0;
+  Calc m = std::max(mf.center.cwiseAbs().maxCoeff(), mo.center.cwiseAbs().maxCoeff());
+  for (const Vec2c& x : o.pts()) d = std::max(d, norm_of(x - mf.center)), m = std::max(m, x.cwiseAbs().maxCoeff());
+  d *= 1 + kMotionBoundSlack;
+  const Calc wf = std::fabs(mf.turn), wo = std::fabs(mo.turn);
+  const Calc u = norm_of(mo.velocity - mf.velocity) * (1 + kMotionBoundSlack) + wo * reach_o;
+  return TurningFrame{(wo * wo * reach_o + 2 * wf * u + wf * wf * (d + u * remaining)) * (1 + kMotionBoundSlack),
+                      rate_error + 8 * kUnitRoundoff * (wf * (d + m) + wo * m)};
+}
+
+/// The time the separation along the outward unit normal n of a face of the posed core f, which turns with f,
+/// may take to fall to target against the points of the posed core o (radii: both radii and the skin): each
+/// point's separation falls at most at its rate now plus the frame's curvature (turning_frame()), and the first
+/// reach of target over all points is safe. 0 when some point is not above target.
+inline Calc turning_face_step(const Core& f, const BodyMotion& mf, const Core& o, const BodyMotion& mo,
+                              const TurningFrame& frame, const Vec2c& n, Calc radii, Calc target) noexcept {
+  const Calc base = support(f, n) + radii + target;
+  const Calc slide = n.dot(mo.velocity - mf.velocity);
+  Calc h = std::numeric_limits<Calc>::infinity();
+  for (const Vec2c& x : o.pts()) {
+    const Calc room = x.dot(n) - base;
+    if (!(room > 0)) return 0;
+    const Vec2c ao = x - mo.center, af = x - mf.center;
+    const Calc rate =
+        slide + mo.turn * (n.y() * ao.x() - n.x() * ao.y()) - mf.turn * (n.y() * af.x() - n.x() * af.y());
+    h = std::min(h, first_reach(room, frame.rate_error - rate, frame.curvature));
+  }
+  return h * (1 - kMotionBoundSlack);
+}
+
 /// Conservative advancement of two local cores moved by their sweeps, from s = 0 to s_max, both dilated by skin
 /// in all (the images' distance from the exact shapes). Along a fixed axis n the separation falls no faster than
-/// n . (centre velocity of p - that of q) plus each body's turn rate times its reach, so every face normal of
-/// both posed cores and the closest points' direction bound a safe step, and the largest is taken (a translating
+/// n . (centre velocity of p - that of q) plus each body's turn rate times its reach, and along a face turning
+/// with its body no faster than turning_face_step() allows, so every face normal of both posed cores and the
+/// closest points' direction bound a safe step, and the largest is taken (a translating
 /// pair of polygons steps to its first contact at once; a box sliding along flat ground is a miss in one step);
 /// when rounding leaves no axis separating by more than target, the gap itself falls no faster than the bound on
 /// all motion.
@@ -222,10 +285,10 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc r = pl.radius + ql.radius + skin;
   const Calc speed = sweep_speed(sp, pl) + sweep_speed(sq, ql);
   const Vec2c v = (widen(sp.c1) - widen(sp.c0)) - (widen(sq.c1) - widen(sq.c0));
-  const Calc turning =
-      (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_of(pl, widen(sp.local_center)) +
-       std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_of(ql, widen(sq.local_center))) *
-      (1 + kMotionBoundSlack);
+  const Calc reach_p = reach_of(pl, widen(sp.local_center)), reach_q = reach_of(ql, widen(sq.local_center));
+  const Calc turning = (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_p +
+                        std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_q) *
+                       (1 + kMotionBoundSlack);
   const Calc closing_error =
       8 * kUnitRoundoff *
       ((widen(sp.c1) - widen(sp.c0)).cwiseAbs().sum() + (widen(sq.c1) - widen(sq.c0)).cwiseAbs().sum());
@@ -235,12 +298,10 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc wp = static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0);
   const Calc wq = static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0);
   const Arms arms_p = arms_of(pl, widen(sp.local_center)), arms_q = arms_of(ql, widen(sq.local_center));
-  // Without a turn every point moves at the centre's velocity and the Taylor bound is the linear one.
-  const bool taylor = arms_p.kept && arms_q.kept && (wp != 0 || wq != 0);
   const Calc rate_error = closing_error + 8 * kUnitRoundoff * turning;
-  const Calc curvature =
-      (wp * wp * reach_of(pl, widen(sp.local_center)) + wq * wq * reach_of(ql, widen(sq.local_center))) *
-      (1 + kMotionBoundSlack);
+  const Calc curvature = (wp * wp * reach_p + wq * wq * reach_q) * (1 + kMotionBoundSlack);
+  // Without curvature (no point off a centre turns) the Taylor bound is the linear one.
+  const bool taylor = arms_p.kept && arms_q.kept && curvature > 0;
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
     const SweepPose xp = sweep_pose(sp, s), xq = sweep_pose(sq, s);
@@ -259,27 +320,67 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
         for_each_face(q, [&](const Vec2c& n, unsigned) { f(Vec2c(-n)); });
       }
     };
-    // Along each axis the larger of two safe steps: the separation falling at the bound on all motion along it,
-    // and at the leads' Taylor bound (which follows the points that can touch).
+    // The separation along a fixed axis falling at the bound on all motion along it.
+    const auto linear_along = [&](const Vec2c& n, Calc separation) {
+      const Calc closing = std::max(n.dot(v), Calc(0)) + turning + closing_error;
+      return separation > target ? (separation - target) / closing : Calc(0);  // +inf when still
+    };
+    // The closest points' direction is fixed: the larger of the linear step and the leads' Taylor bound (which
+    // follows the points that can touch).
     const auto safe_along = [&](const Vec2c& n) {
       const Calc separation = separation_along(p, q, n) - skin;
-      const Calc closing = std::max(n.dot(v), Calc(0)) + turning + closing_error;
-      if (!(separation > target)) return Calc(0);
-      const Calc linear = (separation - target) / closing;  // +inf when still
-      if (!taylor) return linear;
+      const Calc linear = linear_along(n, separation);
+      if (!taylor || !(linear > 0)) return linear;
       const Lead lp = lead_along(p, arms_p, xp.rotation, n, vp, wp);
       const Lead lq = lead_along(q, arms_q, xq.rotation, Vec2c(-n), vq, wq);
       return std::max(linear, lead_step(separation - target, lp, lq, rate_error, curvature));
     };
-    Calc ds = 0;
-    each_axis([&](const Vec2c& n) { ds = std::max(ds, safe_along(n)); });
+    // Every face's linear step, and the face separating most (widest). A face's normal turns with its body:
+    // along the widest, the bound that follows the face as it turns (turning_face_step()) as well; where it
+    // meets a vertex over it, their distance is the gap.
+    FaceAxis widest;
+    Calc widest_separation = -std::numeric_limits<Calc>::infinity(), ds = 0;
+    const auto face = [&](const FaceAxis& axis) {
+      const Calc separation = separation_along(p, q, axis.normal) - skin;
+      if (separation > widest_separation) widest_separation = separation, widest = axis;
+      ds = std::max(ds, linear_along(axis.normal, separation));
+    };
+    if (fp.complete) {
+      for (std::size_t i = 0; i < fp.count; ++i) face(FaceAxis{0, fp.index[i], turned(xp.rotation, fp.normal[i])});
+    } else {
+      for_each_face(p, [&](const Vec2c& n, unsigned i) { face(FaceAxis{0, i, n}); });
+    }
+    if (fq.complete) {
+      for (std::size_t i = 0; i < fq.count; ++i) {
+        face(FaceAxis{1, fq.index[i], Vec2c(-turned(xq.rotation, fq.normal[i]))});
+      }
+    } else {
+      for_each_face(q, [&](const Vec2c& m, unsigned i) { face(FaceAxis{1, i, Vec2c(-m)}); });
+    }
+    if (ds > 0) {
+      // Bounded up to time 1, not s_max: a pair's steps must not depend on how far the query follows it (the
+      // earliest of the pairs before it), so that swapping the shapes gives the same bits.
+      const BodyMotion mp = body_motion(sp, s), mq = body_motion(sq, s);
+      const Calc turning_step =
+          widest.owner == 0
+              ? turning_face_step(p, mp, q, mq, turning_frame(q, mp, mq, reach_q, rate_error, 1 - s),
+                                  widest.normal, r, target)
+              : turning_face_step(q, mq, p, mp, turning_frame(p, mq, mp, reach_p, rate_error, 1 - s),
+                                  Vec2c(-widest.normal), r, target);
+      ds = std::max(ds, turning_step);
+    }
     if (s == 0 && !(ds > 0) && cores_intersect(p, q)) return hit_overlapping(p, q, s, step);
-    const Closest cl = closest_points(p, q);
+    Closest cl;
+    const bool on_face = face_witness(p, q, widest, cl);
+    if (!on_face) cl = closest_points(p, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
-    const auto hit = [&] { return hit_between(p, q, cl, s, step, best_axis(p, q, cl, each_axis)); };
+    const auto hit = [&] {
+      return hit_between(p, q, cl, s, step, on_face ? widest.normal : best_axis(p, q, cl, each_axis));
+    };
     if (gap <= 2 * target) return hit();
+    // The closest points' direction (when not the widest face's normal, already bounded).
     const Vec2c n = unit_of(cl.on_q - cl.on_p);
-    if (n != Vec2c::Zero()) ds = std::max(ds, safe_along(n));
+    if (!on_face && n != Vec2c::Zero()) ds = std::max(ds, safe_along(n));
     if (!(ds > 0)) ds = (gap - target) / speed;
     if (!(ds > 0)) return hit();
     if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};

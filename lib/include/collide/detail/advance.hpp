@@ -62,14 +62,16 @@ inline Calc separation_along(const Core& p, const Core& q, const Vec2c& n) noexc
 /// only moves or turns; a core with more than 8 faces is not kept (complete = false).
 struct KeptFaces {
   std::array<Vec2c, 8> normal;
+  std::array<unsigned, 8> index;  ///< the face's index as for_each_face() gives it
   std::size_t count = 0;
   bool complete = true;
 };
 
 inline KeptFaces kept_faces(const Core& c) {
   KeptFaces k;
-  for_each_face(c, [&](const Vec2c& n, unsigned) {
+  for_each_face(c, [&](const Vec2c& n, unsigned i) {
     if (k.count < k.normal.size()) {
+      k.index[k.count] = i;
       k.normal[k.count++] = n;
     } else {
       k.complete = false;
@@ -78,11 +80,12 @@ inline KeptFaces kept_faces(const Core& c) {
   return k;
 }
 
-/// Calls f(n) with each face normal of c: the kept ones, or recomputed when they were not all kept.
+/// Calls f(n, i) with each face normal of c and its index: the kept ones, or recomputed when they were not all
+/// kept.
 template <class F>
 void for_each_kept_face(const KeptFaces& k, const Core& c, F&& f) {
-  if (!k.complete) return for_each_face(c, [&](const Vec2c& n, unsigned) { f(n); });
-  for (std::size_t i = 0; i < k.count; ++i) f(k.normal[i]);
+  if (!k.complete) return for_each_face(c, f);
+  for (std::size_t i = 0; i < k.count; ++i) f(k.normal[i], k.index[i]);
 }
 
 /// The direction that separates the cores best among the closest-point direction and the axes
