@@ -268,37 +268,48 @@ struct Closest {
 };
 
 /// Updates best with the closest pairs between the points pts and the edges of the core whose
-/// points are `edges` (swap: the edges belong to the first core).
+/// points are `edges` (swap: the edges belong to the first core). The loop keeps the best pair's
+/// indices and parameter and builds the result once (the values of rebuilding it at every
+/// improvement, without a struct copy per candidate).
 inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts, std::span<const Vec2c> edges,
                                        bool swap, std::size_t first = 0, std::size_t count = 8) noexcept {
-  {
-    const std::size_t n = edges.size();
-    const std::size_t start = n <= 2 ? 0 : first % n;  // indices wrap by subtraction, not division
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-      const Vec2c& v = pts[k];
-      const std::size_t m = n == 1 ? 1 : (n == 2 ? 1 : std::min(n, count));
-      for (std::size_t j = 0; j < m; ++j) {
-        const std::size_t i = start + j < n ? start + j : start + j - n;
-        const Vec2c& a = edges[i];
-        const Vec2c& b = edges[i + 1 < n ? i + 1 : 0];
-        const Vec2c d = b - a;
-        const Calc dd = d.squaredNorm();
-        const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
-        const Vec2c c = a + d * t;
-        const Calc d2 = (v - c).squaredNorm();
-        if (!(d2 < best.dist2)) continue;
-        CoreFeature fe{unsigned(i), false};
-        if (t >= 1) {
-          fe.index = unsigned((i + 1) % n);
-        } else if (t > 0) {
-          fe.edge = true;  // a segment's side: 0 right of a -> b, 1 left
-          if (n == 2) fe.index = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x()) < 0 ? 0u : 1u;
-        }
-        const CoreFeature fv{unsigned(k), false};
-        best = swap ? Closest{d2, c, v, fe, fv} : Closest{d2, v, c, fv, fe};
-      }
+  const std::size_t n = edges.size();
+  const std::size_t start = n <= 2 ? 0 : first % n;  // indices wrap by subtraction, not division
+  const std::size_t m = n == 1 || n == 2 ? 1 : std::min(n, count);
+  Calc best_d2 = best.dist2, best_t = 0;
+  std::size_t best_k = 0, best_i = 0;
+  bool found = false;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Vec2c& v = pts[k];
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::size_t i = start + j < n ? start + j : start + j - n;
+      const Vec2c& a = edges[i];
+      const Vec2c d = edges[i + 1 < n ? i + 1 : 0] - a;
+      const Calc dd = d.squaredNorm();
+      const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
+      const Calc d2 = (v - (a + d * t)).squaredNorm();
+      if (!(d2 < best_d2)) continue;
+      best_d2 = d2;
+      best_t = t;
+      best_k = k;
+      best_i = i;
+      found = true;
     }
   }
+  if (!found) return;
+  const Vec2c& v = pts[best_k];
+  const Vec2c& a = edges[best_i];
+  const Vec2c d = edges[best_i + 1 < n ? best_i + 1 : 0] - a;
+  const Vec2c c = a + d * best_t;
+  CoreFeature fe{unsigned(best_i), false};
+  if (best_t >= 1) {
+    fe.index = unsigned((best_i + 1) % n);
+  } else if (best_t > 0) {
+    fe.edge = true;  // a segment's side: 0 right of a -> b, 1 left
+    if (n == 2) fe.index = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x()) < 0 ? 0u : 1u;
+  }
+  const CoreFeature fv{unsigned(best_k), false};
+  best = swap ? Closest{best_d2, c, v, fe, fv} : Closest{best_d2, v, c, fv, fe};
 }
 
 /// Closest points between two cores' boundaries, with the features they lie on; exact only up to
@@ -314,26 +325,37 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 // ---------------------------------------------------------------------------------------------
 // Penetration by separating axes, for cores that intersect.
 
-/// |v| without underflow or overflow of |v|^2: a vector with a component outside [2^-500, 2^500]
-/// is first scaled by a power of two (exact when scaling up), so a direction between points
-/// 1e-159 apart keeps its 53 bits instead of the few left in a subnormal square.
-inline Calc norm_of(const Vec2c& v) noexcept {
-  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
-  if (!(m > 0) || (m >= kPlainNormLow && m <= kPlainNormHigh)) return v.norm();
+/// |v| and v / |v| for a vector v with a component outside [2^-500, 2^500], scaled first by a
+/// power of two (see norm_of). Out of line: the common case inlines without them.
+[[gnu::noinline]] inline Calc norm_of_scaled(const Vec2c& v, Calc m) noexcept {
   int e = 0;
   static_cast<void>(std::frexp(m, &e));
   return std::ldexp(Vec2c(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e)).norm(), e);
 }
-
-/// v / |v| (see norm_of); the zero vector for a zero v.
-inline Vec2c unit_of(const Vec2c& v) noexcept {
-  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
-  if (!(m > 0)) return Vec2c::Zero();
-  if (m >= kPlainNormLow && m <= kPlainNormHigh) return v / v.norm();
+[[gnu::noinline]] inline Vec2c unit_of_scaled(const Vec2c& v, Calc m) noexcept {
   int e = 0;
   static_cast<void>(std::frexp(m, &e));
   const Vec2c s(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
   return s / s.norm();
+}
+
+/// |v| without underflow or overflow of |v|^2: a vector with a component outside [2^-500, 2^500]
+/// is first scaled by a power of two (exact when scaling up), so a direction between points
+/// 1e-159 apart keeps its 53 bits instead of the few left in a subnormal square.
+[[gnu::always_inline]] inline Calc norm_of(const Vec2c& v) noexcept {
+  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+  if (!(m > 0) || (m >= kPlainNormLow && m <= kPlainNormHigh)) [[likely]]
+    return v.norm();
+  return norm_of_scaled(v, m);
+}
+
+/// v / |v| (see norm_of); the zero vector for a zero v.
+[[gnu::always_inline]] inline Vec2c unit_of(const Vec2c& v) noexcept {
+  const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+  if (!(m > 0)) return Vec2c::Zero();
+  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
+    return v / v.norm();
+  return unit_of_scaled(v, m);
 }
 
 /// max over the core of x . n
