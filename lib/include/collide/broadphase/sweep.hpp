@@ -120,8 +120,10 @@ class SweepAndPrune : public ProxyOps<SweepAndPrune<T>, T> {
       return;
     }
     // Shift the entry to its place in the sorted part, or send it to the tail if that is far.
-    const std::size_t target = std::size_t(
-        std::lower_bound(entries_.begin(), entries_.begin() + std::ptrdiff_t(sorted_), e, by_min_x) - entries_.begin());
+    // Coherent motion moves an entry a few places: its neighbours tell, without a search.
+    std::size_t target = p;
+    while (target > 0 && e.min_x < entries_[target - 1].min_x && p - target <= kMaxShift) --target;
+    while (target + 1 < sorted_ && entries_[target + 1].min_x < e.min_x && target - p <= kMaxShift) ++target;
     if ((target > p ? target - p : p - target) > kMaxShift) {
       entries_[p].slot = kDead;
       ++dead_;
