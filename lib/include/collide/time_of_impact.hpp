@@ -264,8 +264,7 @@ inline Calc turning_face_step(const Core& f, const BodyMotion& mf, const Core& o
     const Calc room = x.dot(n) - base;
     if (!(room > 0)) return 0;
     const Vec2c ao = x - mo.center, af = x - mf.center;
-    const Calc rate =
-        slide + mo.turn * (n.y() * ao.x() - n.x() * ao.y()) - mf.turn * (n.y() * af.x() - n.x() * af.y());
+    const Calc rate = slide + mo.turn * (n.y() * ao.x() - n.x() * ao.y()) - mf.turn * (n.y() * af.x() - n.x() * af.y());
     h = std::min(h, first_reach(room, frame.rate_error - rate, frame.curvature));
   }
   return h * (1 - kMotionBoundSlack);
@@ -362,11 +361,10 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
       // earliest of the pairs before it), so that swapping the shapes gives the same bits.
       const BodyMotion mp = body_motion(sp, s), mq = body_motion(sq, s);
       const Calc turning_step =
-          widest.owner == 0
-              ? turning_face_step(p, mp, q, mq, turning_frame(q, mp, mq, reach_q, rate_error, 1 - s),
-                                  widest.normal, r, target)
-              : turning_face_step(q, mq, p, mp, turning_frame(p, mq, mp, reach_p, rate_error, 1 - s),
-                                  Vec2c(-widest.normal), r, target);
+          widest.owner == 0 ? turning_face_step(p, mp, q, mq, turning_frame(q, mp, mq, reach_q, rate_error, 1 - s),
+                                                widest.normal, r, target)
+                            : turning_face_step(q, mq, p, mp, turning_frame(p, mq, mp, reach_p, rate_error, 1 - s),
+                                                Vec2c(-widest.normal), r, target);
       ds = std::max(ds, turning_step);
     }
     if (s == 0 && !(ds > 0) && cores_intersect(p, q)) return hit_overlapping(p, q, s, step);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -209,10 +210,13 @@ Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& 
   const Vec2<T> w = in.va - in.vb;
   if (widen(w) == widen(in.va) - widen(in.vb)) {
     const CastResult<T> q = cast_of(a, b, CastInput<T>{w, Vec2<T>(0, 0), in.max_t, in.xa, in.xb});
-    // The point is in the world of time t: b's motion moves it by vb t (one rounding of T).
+    // The point is in the world of the hit's time s, which t rounds toward zero (s below the next
+    // T after t): b's motion moves it by vb s, vb t up to one rounding of T and vb times that gap.
     const double moved = (widen(q.point) + widen(in.vb) * double(r.t) - widen(r.point)).cwiseAbs().maxCoeff();
-    const double bound = 4 * detail::eps<T>() *
-                         (widen(r.point).cwiseAbs().maxCoeff() + widen(in.vb).cwiseAbs().maxCoeff() * double(r.t));
+    const double vb_max = widen(in.vb).cwiseAbs().maxCoeff();
+    const double gap = double(std::nextafter(r.t, std::numeric_limits<T>::infinity())) - double(r.t);
+    const double bound =
+        4 * detail::eps<T>() * (widen(r.point).cwiseAbs().maxCoeff() + vb_max * double(r.t)) + vb_max * gap;
     if (q.outcome != r.outcome || q.t != r.t || (!start && q.normal != r.normal) || (r.hit() && !(moved <= bound))) {
       fail(v, "cast(a, va - vb, b, 0): the same outcome, t and normal, the point moved by vb t", describe_result(q));
     }

@@ -141,35 +141,6 @@ inline CoreCast reversed(CoreCast c) noexcept {
   return c;
 }
 
-/// Combines the answers of two pairs of children: the earlier of hits and limits wins (a limit
-/// earlier than every hit makes the whole answer a limit there); two misses stay a miss.
-inline CoreCast earlier(const CoreCast& a, const CoreCast& b) noexcept {
-  const int iterations = std::max(a.iterations, b.iterations);
-  const bool a_open = a.outcome != CastOutcome::Miss, b_open = b.outcome != CastOutcome::Miss;
-  CoreCast out = (a_open && (!b_open || a.s <= b.s)) ? a : b;
-  out.iterations = iterations;
-  return out;
-}
-
-/// Calls f(pa, pb) for every pair of primitives of a and b (a compound's children), with the
-/// earliest answer so far: f returns the new earliest (see earlier()).
-template <class A, class B, class F>
-CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
-  CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
-  visit_shape(a, [&](const auto& ca) {
-    visit_shape(b, [&](const auto& cb) {
-      for_each_primitive(ca, [&](const auto& pa) {
-        for_each_primitive(cb, [&](const auto& pb) {
-          // A later pair only has to be followed up to the earliest answer so far.
-          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
-          best = earlier(best, f(core_of(pa), core_of(pb), until));
-        });
-      });
-    });
-  });
-  return best;
-}
-
 /// A strict order on cores (point count, then coordinates, then radius), so that a pair is always
 /// advanced in one order whichever order it was asked in: the two orders give the same bits.
 inline bool core_before(const Core& p, const Core& q) noexcept {
@@ -180,6 +151,49 @@ inline bool core_before(const Core& p, const Core& q) noexcept {
     }
   }
   return p.radius < q.radius;
+}
+
+/// Whether the pair of cores {p, q} comes before {p2, q2} in an order that does not depend on
+/// which core of a pair is first: each pair's cores sorted by core_before(), then compared.
+inline bool pair_before(const Core& p, const Core& q, const Core& p2, const Core& q2) noexcept {
+  const bool swap = core_before(q, p), swap2 = core_before(q2, p2);
+  const Core &lo = swap ? q : p, &hi = swap ? p : q, &lo2 = swap2 ? q2 : p2, &hi2 = swap2 ? p2 : q2;
+  if (core_before(lo, lo2)) return true;
+  if (core_before(lo2, lo)) return false;
+  return core_before(hi, hi2);
+}
+
+/// Calls f(pa, pb) for every pair of primitives of a and b (a compound's children), with the
+/// earliest answer so far, and keeps the earliest: of hits and limits the earlier wins (a limit
+/// earlier than every hit makes the whole answer a limit there); two misses stay a miss. Pairs
+/// answering at the same time are ranked by pair_before(), so that the shapes asked in the
+/// other order keep the same pair (and so the reversed normal).
+template <class A, class B, class F>
+CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
+  CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
+  Core best_p, best_q;
+  visit_shape(a, [&](const auto& ca) {
+    visit_shape(b, [&](const auto& cb) {
+      for_each_primitive(ca, [&](const auto& pa) {
+        for_each_primitive(cb, [&](const auto& pb) {
+          // A later pair only has to be followed up to the earliest answer so far.
+          const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
+          const Core p = core_of(pa), q = core_of(pb);
+          const CoreCast c = f(p, q, until);
+          const int iterations = std::max(best.iterations, c.iterations);
+          const bool open = best.outcome != CastOutcome::Miss;
+          if (c.outcome != CastOutcome::Miss &&
+              (!open || c.s < best.s || (c.s == best.s && pair_before(p, q, best_p, best_q)))) {
+            best = c;
+            best_p = p;
+            best_q = q;
+          }
+          best.iterations = iterations;
+        });
+      });
+    });
+  });
+  return best;
 }
 
 /// s in T, rounded toward zero: a time proven safe stays safe.
