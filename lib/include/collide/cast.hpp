@@ -145,7 +145,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     if (ds > s) s = ds, lead = face;
   });
   const bool apart = s > 0;
-  if (apart && s >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
+  if (apart && s > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 1};
   for (int step = 0; step < kCastMaxIterations; ++step) {
     const Core pm = moved_core(p, w * s);
     if (!apart && step == 0 && cores_intersect(pm, q)) return hit_overlapping(pm, q, s, step);
@@ -162,7 +162,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     Calc ds = n == Vec2c::Zero() ? Calc(0) : safe_along(pm, n);
     if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
     if (!(ds > 0)) return hit(pm, cl, s, step);
-    if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
+    if (s + ds > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;
     if (next == s) return hit(pm, cl, s, step);
     s = next;

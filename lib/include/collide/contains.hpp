@@ -41,7 +41,7 @@ bool contains_concrete(const ConvexPolygon<T>& s, const Vec2c& p) noexcept {
   const auto v = s.vertices();
   const std::size_t n = v.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (orient(widen(v[i]), widen(v[(i + 1) % n]), p) < 0) return false;
+    if (orient(widen(v[i]), widen(v[next_index(i, n)]), p) < 0) return false;
   }
   return true;
 }

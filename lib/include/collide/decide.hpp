@@ -325,7 +325,7 @@ bool any_edge(const Core& k, F&& f) noexcept {
   const std::size_t n = k.size();
   if (n <= 2) return f(k[0], k[n - 1]);
   for (std::size_t i = 0; i < n; ++i) {
-    if (f(k[i], k[(i + 1) % n])) return true;
+    if (f(k[i], k[next_index(i, n)])) return true;
   }
   return false;
 }

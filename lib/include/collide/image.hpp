@@ -12,6 +12,7 @@
 #include "collide/transform.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -47,6 +48,12 @@ struct ShapeAccess {
     for (std::size_t k = 0; k < n; ++k) out[k] = at(k);
     return poly;
   }
+  /// Caches normal(k) as edge k's unit outward normal (a polygon of at most kInline vertices).
+  template <Scalar T, class Normal>
+  static void cache_normals(ConvexPolygon<T>& poly, Normal&& normal) noexcept {
+    for (std::size_t k = 0; k < poly.size_; ++k) poly.normals_[k] = normal(k);
+    poly.normals_cached_ = true;
+  }
 };
 
 /// A defining point's image, x(v).
@@ -77,7 +84,10 @@ Capsule<Calc> widened_shape(const Capsule<T>& s) noexcept {
 /// The same shape with double values (exact).
 template <Scalar T>
 ConvexPolygon<Calc> widened_shape(const ConvexPolygon<T>& s) {
-  return ShapeAccess::polygon<Calc>(s.size(), [&](std::size_t k) { return widen(s[k]); });
+  ConvexPolygon<Calc> out = ShapeAccess::polygon<Calc>(s.size(), [&](std::size_t k) { return widen(s[k]); });
+  if (const Vec2c* normals = PolygonAccess::normals(s))
+    ShapeAccess::cache_normals(out, [&](std::size_t i) { return normals[i]; });
+  return out;
 }
 
 /// Calls f with the image of s under x (x not the identity). The image's type is that of s,
@@ -126,11 +136,23 @@ decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const std::size_t n = s.size();
-  const ConvexPolygon<Calc> img =
-      ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
+  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
   bool strict = true;
-  for (std::size_t k = 0; k < n && strict; ++k) strict = orient(img[k], img[(k + 1) % n], img[(k + 2) % n]) > 0;
-  if (strict) return f(img);
+  for (std::size_t k = 0; k < n && strict; ++k)
+    strict = orient(img[k], img[next_index(k, n)], img[next_index(next_index(k, n), n)]) > 0;
+  if (strict) {
+    // The stored shape's normals turned: the exact image's edges turn by q / |q|, and this costs
+    // one square root for the polygon instead of one per edge.
+    if (const Vec2c* normals = PolygonAccess::normals(s)) {
+      const Calc k = 1 / std::sqrt(x.q.squaredNorm());
+      const Calc c = x.q.x() * k, sn = x.q.y() * k;
+      ShapeAccess::cache_normals(img, [&](std::size_t i) {
+        const Calc nx = normals[i].x(), ny = normals[i].y();
+        return Vec2c(c * nx - sn * ny, sn * nx + c * ny);
+      });
+    }
+    return f(img);
+  }
   if (const std::optional<ConvexPolygon<Calc>> hull = rounded_hull(img)) return f(*hull);
   // Flattened to a segment (or a point): its extreme points in lexicographic order.
   const auto less = [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };

@@ -7,11 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace collide {
 
 namespace detail {
+
+/// The index after i in a cycle of n: a compare, where i % n would divide.
+constexpr std::size_t next_index(std::size_t i, std::size_t n) noexcept {
+  return i + 1 < n ? i + 1 : 0;
+}
 
 struct Term {
   double hi;

@@ -199,7 +199,7 @@ inline std::optional<UnitRayHit> ray_core(const Core& c, const UnitRay& ray) {
   }
   const std::size_t n = c.size();
   const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
-    const Vec2c e = c[(i + 1) % n] - c[i];
+    const Vec2c e = c[next_index(i, n)] - c[i];
     nn = Vec2c(e.y(), -e.x());
     p = c[i];
   };

@@ -479,7 +479,7 @@ class ConvexPolygon {
   void cache_normals() noexcept {
     if (size_ > kInline) return;
     for (std::size_t k = 0; k < size_; ++k)
-      normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[(k + 1) % size_]));
+      normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[detail::next_index(k, size_)]));
     normals_cached_ = true;
   }
   std::array<Vec2<T>, kInline> inline_{};
@@ -490,8 +490,10 @@ class ConvexPolygon {
 };
 
 namespace detail {
-/// A polygon's cached edge normals (detail::edge_normal of each edge, bit for bit), or nullptr
-/// when it has none: more than kInline vertices, or an image computed for one query.
+/// A polygon's cached unit edge normals, or nullptr when it has none (more than kInline vertices,
+/// or an image of a polygon that has none). A polygon made by the factories caches
+/// detail::edge_normal of each edge, bit for bit; an image keeps its stored polygon's, turned by
+/// the image's rotation.
 struct PolygonAccess {
   template <Scalar T>
   static const Vec2c* normals(const ConvexPolygon<T>& s) noexcept {

@@ -381,7 +381,7 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
     if (!on_face && n != Vec2c::Zero()) ds = std::max(ds, safe_along(n));
     if (!(ds > 0)) ds = (gap - target) / speed;
     if (!(ds > 0)) return hit();
-    if (s + ds >= s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
+    if (s + ds > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
     const Calc next = s + ds;
     if (!(next > s)) return hit();
     s = next;

@@ -176,7 +176,8 @@ CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
     visit_shape(b, [&](const auto& cb) {
       for_each_primitive(ca, [&](const auto& pa) {
         for_each_primitive(cb, [&](const auto& pb) {
-          // A later pair only has to be followed up to the earliest answer so far.
+          // A later pair only has to be followed up to the earliest answer so far, that time included:
+          // an advancement stops with a miss only past its bound, so a pair tied with the best is ranked.
           const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
           const Core p = core_of(pa), q = core_of(pb);
           const CoreCast c = f(p, q, until);

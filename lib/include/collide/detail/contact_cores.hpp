@@ -122,7 +122,7 @@ inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axi
     f.r2 = ax.face == 0 ? ref[1] : ref[0];
   } else {
     f.r1 = ref[ax.face];
-    f.r2 = ref[(ax.face + 1) % ref.size()];
+    f.r2 = ref[next_index(ax.face, ref.size())];
   }
   return f;
 }
@@ -156,7 +156,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
   auto anti_parallel = [&](std::size_t j) {
     if (inc_normals) return inc_normals[j].dot(f.normal);
     if (j < dots.size() && dots[j] != 0) return dots[j];
-    const Vec2c e = inc[(j + 1) % inc.size()] - inc[j];
+    const Vec2c e = inc[next_index(j, inc.size())] - inc[j];
     const Calc dot = Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
     if (j < dots.size()) dots[j] = dot;
     return dot;
@@ -175,7 +175,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
   Calc best_span = -std::numeric_limits<Calc>::infinity();
   for (std::size_t j = 0; j < inc.size(); ++j) {
     if (anti_parallel(j) > best_dot + kFaceTieTolerance) continue;
-    const Vec2c a0 = inc[j], a1 = inc[(j + 1) % inc.size()];
+    const Vec2c a0 = inc[j], a1 = inc[next_index(j, inc.size())];
     const Calc t0 = (a0 - f.r1).dot(tangent), t1 = (a1 - f.r1).dot(tangent);
     const Calc span = std::min(std::max(t0, t1), len2) - std::max(std::min(t0, t1), Calc(0));
     if (span > best_span) {
@@ -183,8 +183,9 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
       best = j;
     }
   }
-  out.ends = {inc[best], inc[(best + 1) % inc.size()]};
-  out.vertices = {unsigned(best), unsigned((best + 1) % inc.size())};
+  const std::size_t after = next_index(best, inc.size());
+  out.ends = {inc[best], inc[after]};
+  out.vertices = {unsigned(best), unsigned(after)};
   out.count = 2;
   return out;
 }

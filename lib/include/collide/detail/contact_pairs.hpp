@@ -27,8 +27,8 @@ namespace collide::detail {
 
 /// A box or polygon core with the unit outward normal of each edge. Box normals come from the
 /// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are those it
-/// cached at construction, or computed from its edges when asked (an image built for one query:
-/// most pairs apart stop at the first face).
+/// cached (at construction, or its stored polygon's turned, for an image), else computed from its
+/// edges when asked (most pairs apart stop at the first face).
 struct Hull {
   Core core;
   std::array<Vec2c, 4> box_normals;
@@ -50,7 +50,7 @@ struct Hull {
   const Vec2c* normals() const noexcept { return box ? box_normals.data() : cached; }
   Vec2c normal(std::size_t i) const {
     if (const Vec2c* n = normals()) return n[i];
-    return edge_normal(core[i], core[(i + 1) % core.size()]);
+    return edge_normal(core[i], core[next_index(i, core.size())]);
   }
 };
 
@@ -158,14 +158,43 @@ bool decide_exactly(const A& a, const B& b) {
   return decide::pair(a, b);
 }
 
-/// The contact of two primitives without a specialisation: the exact decision, then contact_cores().
+/// The contact of two primitives without a specialisation, as contact_cores() computes it. The
+/// rounded cores (within a few roundings of the scale of the exact ones) decide when clear of the
+/// band: cores penetrating deeper than it along the least-penetration axis, or meeting under radii
+/// wider than it, overlap; cores apart by a gap beyond it do not (each with the exact cores within
+/// the band of the rounded ones). Otherwise, and for tiny pairs, the exact decision.
 template <class A, class B>
 std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
   const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
                            !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
-  if (decide_exactly(a, b)) return contact_cores(core_of(a), core_of(b), speculative, radius_free);
-  if (speculative > 0) return speculative_contact_cores(core_of(a), core_of(b), speculative);
-  return std::nullopt;
+  const Core p = core_of(a), q = core_of(b);
+  const Calc radii = p.radius + q.radius, scale = std::max(point_scale(p, q), radii);
+  const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
+    return speculative > 0 ? speculative_contact_cores(p, q, speculative) : std::nullopt;
+  };
+  if (!(scale >= kTinyCore) || tiny_scale(p, q) != 0) {
+    if (decide_exactly(a, b)) return contact_cores(p, q, speculative, radius_free);
+    return speculative_or_none();
+  }
+  const Calc band = band_of(scale), tie = owner_tie(p, q);
+  // With a polygon, the least penetration over the faces tells cores clearly apart or clearly
+  // meeting at once, and a face separating them by more than the band ends the search; a point
+  // or a segment against a point or a segment has no such faces, and their test is cheap.
+  const bool polygon = std::max(p.size(), q.size()) > 2;
+  const Axis ax = polygon ? least_penetration(p, q, tie, radii - band) : Axis{};
+  const Calc core_depth = ax.depth - radii;  // within 2 ties of the cores' least penetration
+  const bool deep = polygon && core_depth > band + 2 * tie;
+  if (deep || (!(polygon && core_depth < -band) && cores_intersect(p, q))) {
+    if (!(deep || radii > band || decide_exactly(a, b))) return speculative_or_none();
+    return contact_from_axis(p, q, polygon ? ax : least_penetration(p, q, tie), speculative);
+  }
+  const Closest cl = closest_points(p, q);
+  const Calc gap = std::sqrt(cl.dist2) - radii;
+  if (!(gap < -band || (!(gap > band) && decide_exactly(a, b)))) return speculative_or_none();
+  if (!radius_free) {
+    if (const std::optional<CoreContact> c = contact_from_closest(p, q, cl)) return c;
+  }
+  return contact_from_axis(p, q, least_penetration(p, q, tie), speculative);
 }
 
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
@@ -263,7 +292,7 @@ template <Scalar T>
                                                                     Calc speculative) {
   const Vec2c* cached = PolygonAccess::normals(b);
   const auto normal = [&](std::size_t i) {
-    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[(i + 1) % b.size()]));
+    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[next_index(i, b.size())]));
   };
   const FaceExcess fe = face_excess(widen(a.center()), Calc(a.radius()), b, normal, speculative);
   if (fe.apart) return std::nullopt;

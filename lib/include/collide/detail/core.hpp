@@ -198,7 +198,7 @@ inline bool segments_intersect(const Vec2c& a, const Vec2c& b, const Vec2c& c, c
 inline bool point_in_polygon(const Vec2c& p, std::span<const Vec2c> poly) noexcept {
   const std::size_t n = poly.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (orient(poly[i], poly[(i + 1) % n], p) < 0) return false;
+    if (orient(poly[i], poly[next_index(i, n)], p) < 0) return false;
   }
   return true;
 }
@@ -214,7 +214,7 @@ bool has_separating_edge(std::span<const Vec2c> poly, std::span<const P> other) 
   const std::size_t n = poly.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2c& a = poly[i];
-    const Vec2c& b = poly[(i + 1) % n];
+    const Vec2c& b = poly[next_index(i, n)];
     bool all_out = true;
     for (const P& q : other) {
       if (turn_of(a, b, q) >= 0) {
@@ -241,7 +241,7 @@ inline bool cores_intersect(const Core& p, const Core& q) noexcept {
     if (point_in_polygon(s[0], l.pts())) return true;
     const std::size_t n = l.size();
     for (std::size_t i = 0; i < n; ++i) {
-      if (segments_intersect(s[0], s[1], l[i], l[(i + 1) % n])) return true;
+      if (segments_intersect(s[0], s[1], l[i], l[next_index(i, n)])) return true;
     }
     return false;
   }
@@ -303,7 +303,7 @@ inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts
   const Vec2c c = a + d * best_t;
   CoreFeature fe{unsigned(best_i), false};
   if (best_t >= 1) {
-    fe.index = unsigned((best_i + 1) % n);
+    fe.index = unsigned(next_index(best_i, n));
   } else if (best_t > 0) {
     fe.edge = true;  // a segment's side: 0 right of a -> b, 1 left
     if (n == 2) fe.index = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x()) < 0 ? 0u : 1u;
@@ -379,7 +379,7 @@ void for_each_face(const Core& c, F&& f) {
     return;
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2c d = c[(i + 1) % n] - c[i];
+    const Vec2c d = c[next_index(i, n)] - c[i];
     if (d == Vec2c::Zero()) continue;
     f(unit_of(Vec2c(d.y(), -d.x())), static_cast<unsigned>(i));
   }
