@@ -217,6 +217,8 @@ def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[st
         subprocess.run(["cmake", "-S", str(src), "-B", str(out), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
                         "-DCMAKE_CXX_COMPILER=g++", "-DCOLLIDE_WERROR=ON", "-DCOLLIDE_BUILD_BENCH=OFF"],
                        check=True, env=env, stdout=subprocess.DEVNULL)
+    # Regenerated first: a build.ninja older than the tree's globs lists targets that no longer exist.
+    subprocess.run(["ninja", "-C", str(out), "build.ninja"], check=True, env=env, stdout=subprocess.DEVNULL)
     targets = subprocess.run(["ninja", "-C", str(out), "-t", "targets", "all"], capture_output=True, text=True,
                              check=True).stdout
     # Every linked program of the three layers: the property suites (properties/, the planted-fault

@@ -9,7 +9,8 @@
 ///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
 ///     normals (taken from the stored axes for boxes), then reference-face clipping.
 /// Every other pair (capsules, boxes flat on an axis, boxes thinner than their corners' rounding,
-/// polygons of more than 8 vertices, tiny shapes) decides exactly, then runs contact_cores().
+/// polygons of more than 8 vertices) runs contact_cores()'s steps on the generic cores, their
+/// least penetration or closest points deciding outside the band; tiny pairs decide exactly first.
 /// With a speculative distance, pairs apart by at most it get a speculative contact.
 
 #include "collide/decide.hpp"
