@@ -103,14 +103,30 @@ Calc box_scale(const Aabb<T>& b) noexcept {
   return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
 }
 
+/// The box of primitive s's computed image under x, before any padding.
+template <class P>
+Aabb<Calc> image_box(const P& s, const Pose& x) {
+  return with_image(s, x, [](const auto& img) { return bounds(img); });
+}
+/// A polygon's: the box of its mapped vertices, which holds whatever its image is (their hull, or
+/// two of them) without building that image.
+template <Scalar T>
+Aabb<Calc> image_box(const ConvexPolygon<T>& s, const Pose& x) {
+  Vec2c lo = image_point(x, widen(s[0])), hi = lo;
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    const Vec2c p = image_point(x, widen(s[k]));
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return AabbAccess::unchecked<Calc>(lo, hi);
+}
+
 /// Conservative box, in T, of the image of primitive s under x, an image whose points are within
 /// tol of the exact image's: the rounded image's box padded by tol and rounded outward.
 template <Scalar T, class P>
 Aabb<T> placed_bounds(const P& s, const Pose& x, Calc tol) {
-  return with_image(s, x, [&](const auto& img) {
-    const Aabb<Calc> b = bounds(img);
-    return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
-  });
+  const Aabb<Calc> b = image_box(s, x);
+  return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
 }
 
 }  // namespace detail

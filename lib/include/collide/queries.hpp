@@ -158,9 +158,10 @@ struct Contact {
 
 namespace detail {
 
+/// Writes c rounded to T into out, field by field (the caller's result object: a copy of a
+/// contact written piecewise would be read back in wider pieces than it was stored).
 template <Scalar T>
-Contact<T> to_scalar(const CoreContact& c) {
-  Contact<T> out{};
+void round_into(const CoreContact& c, Contact<T>& out) {
   out.normal = c.normal.template cast<T>();
   out.depth = static_cast<T>(c.depth);
   out.count = c.count;
@@ -169,7 +170,6 @@ Contact<T> to_scalar(const CoreContact& c) {
     out.ids[i] = c.ids[i];
     out.separations[i] = static_cast<T>(c.separations[i]);
   }
-  return out;
 }
 
 /// The contact of two primitives in either order (contact_pair() takes registry order; the other
@@ -245,8 +245,9 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0
   const std::optional<CoreContact> c = visit_shape(a, [&](const auto& ca) {
     return visit_shape(b, [&](const auto& cb) { return contact_concrete(ca, cb, spec); });
   });
-  if (!c) return std::nullopt;
-  return to_scalar<T>(*c);
+  std::optional<Contact<T>> out;
+  if (c) round_into(*c, out.emplace());
+  return out;
 }
 
 }  // namespace detail

@@ -10,11 +10,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -39,9 +41,12 @@ inline bool check_value(T v, long index, ShapeError* out) noexcept {
 /// True when every value is finite and within max_magnitude<T>() (check_values() without the error).
 template <Scalar T>
 inline bool values_in_range(std::initializer_list<T> values) noexcept {
-  bool ok = true;
-  for (T v : values) ok = ok && std::fabs(v) <= max_magnitude<T>();  // false for NaN
-  return ok;
+  // On the magnitudes' bits: one compare for all values, and NaN's bits lie above every finite value's.
+  using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+  constexpr Bits sign = Bits(1) << (8 * sizeof(T) - 1);
+  Bits m = 0;
+  for (T v : values) m = std::max(m, Bits(std::bit_cast<Bits>(v) & ~sign));
+  return m <= std::bit_cast<Bits>(max_magnitude<T>());
 }
 
 template <Scalar T>

@@ -80,23 +80,20 @@ decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
   }
 }
 
-/// The box of s's computed image under x, before any padding. A polygon's is the box of its
-/// mapped vertices, which holds whatever its image is (their hull, or two of them) without
-/// building that image.
+/// The box of s's computed image under x, before any padding (a compound's: its placed box).
 template <class S, Scalar T>
-Aabb<Calc> image_box(const S& s, const Transform<T>& x) {
-  if constexpr (std::is_same_v<S, ConvexPolygon<T>>) {
-    const Pose pose = x.pose();
-    Vec2c lo = image_point(pose, widen(s[0])), hi = lo;
-    for (std::size_t k = 1; k < s.size(); ++k) {
-      const Vec2c p = image_point(pose, widen(s[k]));
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    return AabbAccess::unchecked<Calc>(lo, hi);
+Aabb<Calc> placed_box(const S& s, const Transform<T>& x) {
+  if constexpr (is_compound_v<S>) {
+    return calc_bounds(placed(s, x.pose()));
   } else {
-    return with_placed(s, x, [](const auto& img) { return calc_bounds(img); });
+    return image_box(s, x.pose());
   }
+}
+
+/// transform_tolerance() of a concrete shape under x, not the identity.
+template <class S, Scalar T>
+Calc image_tolerance_of(const S& s, const Transform<T>& x) {
+  return image_tolerance(x.pose(), local_extent(s));
 }
 
 /// Calls f(a placed, b placed) for any two shapes (variants visited first).
@@ -118,8 +115,7 @@ decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, 
 template <AnyShape S>
 Calc transform_tolerance(const S& s, const Transform<scalar_of_t<S>>& x) {
   if (x.is_identity()) return placement_tolerance(s);
-  return detail::visit_shape(s,
-                             [&](const auto& c) { return detail::image_tolerance(x.pose(), detail::local_extent(c)); });
+  return detail::visit_shape(s, [&](const auto& c) { return detail::image_tolerance_of(c, x); });
 }
 
 /// The band of overlaps(a, xa, b, xb): transform_tolerance(a, xa) + transform_tolerance(b, xb).
@@ -149,8 +145,8 @@ Aabb<scalar_of_t<S>> bounds(const S& s, const Transform<scalar_of_t<S>>& x) {
   using T = scalar_of_t<S>;
   if (x.is_identity()) return bounds(s);
   return detail::visit_shape(s, [&](const auto& c) {
-    const Calc tol = detail::image_tolerance(x.pose(), detail::local_extent(c));  // transform_tolerance()
-    const Aabb<Calc> b = detail::image_box(c, x);
+    const Calc tol = detail::image_tolerance_of(c, x);
+    const Aabb<Calc> b = detail::placed_box(c, x);
     return bounds_from_calc<T>((b.min().array() - tol).matrix(), (b.max().array() + tol).matrix());
   });
 }

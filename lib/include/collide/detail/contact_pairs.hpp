@@ -7,10 +7,12 @@
 ///   - circle against a box: the centre's coordinates in the box's frame, clamped;
 ///   - circle against a polygon: the centre's face excesses, then its closest point;
 ///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
-///     normals (taken from the stored axes for boxes), then reference-face clipping.
-/// Every other pair (capsules, boxes flat on an axis, boxes thinner than their corners' rounding,
-/// polygons of more than 8 vertices) runs contact_cores()'s steps on the generic cores, their
-/// least penetration or closest points deciding outside the band; tiny pairs decide exactly first.
+///     normals (taken from the stored axes for boxes), then reference-face clipping;
+///   - a capsule against a box or polygon: the generic steps below on the same known normals.
+/// Every other pair (circle-capsule, capsule-capsule, boxes flat on an axis, boxes thinner than
+/// their corners' rounding, polygons of more than 8 vertices) runs contact_cores()'s steps on the
+/// generic cores, their least penetration or closest points deciding outside the band (a face
+/// separating the shapes by more than it ends the search); tiny pairs decide exactly first.
 /// With a speculative distance, pairs apart by at most it get a speculative contact.
 
 #include "collide/decide.hpp"
@@ -26,16 +28,17 @@
 
 namespace collide::detail {
 
-/// A box or polygon core with the unit outward normal of each edge. Box normals come from the
-/// stored axes (exact up to one rounding), not from the rounded corners; a polygon's are those it
-/// cached (at construction, or its stored polygon's turned, for an image), else computed from its
-/// edges when asked (most pairs apart stop at the first face).
+/// A core with the unit outward normal of each face when known without a square root per face.
+/// Box normals come from the stored axes (exact up to one rounding), not from the rounded corners;
+/// a capsule's two sides share one square root; a polygon's are those it cached (at construction,
+/// or its stored polygon's turned, for an image). Without them the core's own faces are computed
+/// when asked (most pairs apart stop at the first face).
 struct Hull {
   Core core;
-  std::array<Vec2c, 4> box_normals;
+  std::array<Vec2c, 4> own_normals;
   const Vec2c* cached = nullptr;  ///< the polygon's cached normals, if any
-  bool box = false;
-  Calc scale = 0;  ///< the largest absolute coordinate of the core
+  bool own = false;               ///< own_normals holds the faces' normals
+  Calc scale = 0;                 ///< the largest absolute coordinate of the core
   /// Pushes the points and sets scale.
   template <class Points>
   void push_all(const Points& xs) {
@@ -47,12 +50,8 @@ struct Hull {
     }
     scale = m;
   }
-  /// Every edge's normal when known without computing (a box, a polygon's cache), else nullptr.
-  const Vec2c* normals() const noexcept { return box ? box_normals.data() : cached; }
-  Vec2c normal(std::size_t i) const {
-    if (const Vec2c* n = normals()) return n[i];
-    return edge_normal(core[i], core[next_index(i, core.size())]);
-  }
+  /// Every face's normal when known (a box, a capsule, a polygon's cache), else nullptr.
+  const Vec2c* normals() const noexcept { return own ? own_normals.data() : cached; }
 };
 
 /// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root.
@@ -114,8 +113,8 @@ bool hull_of(const Aabb<T>& s, Hull& h) {
   if (!(s.min().x() < s.max().x() && s.min().y() < s.max().y())) return false;
   const Vec2c lo = widen(s.min()), hi = widen(s.max());
   h.push_all(std::array<Vec2c, 4>{lo, Vec2c(hi.x(), lo.y()), hi, Vec2c(lo.x(), hi.y())});
-  h.box_normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
-  h.box = true;
+  h.own_normals = {Vec2c(0, -1), Vec2c(1, 0), Vec2c(0, 1), Vec2c(-1, 0)};
+  h.own = true;
   return true;
 }
 
@@ -132,8 +131,8 @@ bool hull_of(const Obb<T>& s, Hull& h) {
   h.push_all(std::array<Vec2c, 4>{c - ex - ey, c + ex - ey, c + ex + ey, c - ex + ey});
   const Calc ww = w.squaredNorm();  // within a few eps_T of 1
   const Vec2c u = w / std::sqrt(ww), v = perp(u);
-  h.box_normals = {Vec2c(-v), u, v, Vec2c(-u)};
-  h.box = true;
+  h.own_normals = {Vec2c(-v), u, v, Vec2c(-u)};
+  h.own = true;
   return true;
 }
 
@@ -146,11 +145,34 @@ bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   return true;
 }
 
+/// Builds h from a capsule whose ends differ: its sides as faces 0 and 1, as for_each_face()
+/// numbers a segment's.
+template <Scalar T>
+bool hull_of(const Capsule<T>& s, Hull& h) {
+  h.core = core_of(s);
+  if (h.core.size() != 2) return false;
+  const Vec2c d = h.core[1] - h.core[0];
+  const Vec2c n = unit_of(Vec2c(d.y(), -d.x()));
+  h.own_normals[0] = n;
+  h.own_normals[1] = -n;
+  h.own = true;
+  h.scale = std::max(h.core[0].cwiseAbs().maxCoeff(), h.core[1].cwiseAbs().maxCoeff());
+  return true;
+}
+
+/// Calls f(normal, index) for each face of a core: its known normals, else its own (for_each_face).
+inline auto faces_of(const Core& c, const Vec2c* normals) {
+  return [&c, normals](auto&& f) {
+    if (normals) {
+      for (std::size_t i = 0; i < c.size(); ++i) f(normals[i], unsigned(i));
+    } else {
+      for_each_face(c, f);
+    }
+  };
+}
 /// Calls f(normal, index) for each face of a hull.
 inline auto faces_of(const Hull& h) {
-  return [&h](auto&& f) {
-    for (std::size_t i = 0; i < h.core.size(); ++i) f(h.normal(i), unsigned(i));
-  };
+  return faces_of(h.core, h.normals());
 }
 
 /// The exact decision for a pair of primitives in registry order.
@@ -164,38 +186,54 @@ bool decide_exactly(const A& a, const B& b) {
 /// band: cores penetrating deeper than it along the least-penetration axis, or meeting under radii
 /// wider than it, overlap; cores apart by a gap beyond it do not (each with the exact cores within
 /// the band of the rounded ones). Otherwise, and for tiny pairs, the exact decision.
+/// p and q: the cores of a and b; np and nq: their faces' normals when known, else nullptr.
 template <class A, class B>
-std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
+[[gnu::always_inline]] inline std::optional<CoreContact> contact_of_cores(const A& a, const B& b, const Core& p,
+                                                                          const Vec2c* np, const Core& q,
+                                                                          const Vec2c* nq, Calc speculative) {
   const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
                            !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
-  const Core p = core_of(a), q = core_of(b);
-  const Calc radii = p.radius + q.radius, scale = std::max(point_scale(p, q), radii);
+  const Calc points = point_scale(p, q), radii = p.radius + q.radius, scale = std::max(points, radii);
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(p, q, speculative) : std::nullopt;
   };
-  if (!(scale >= kTinyCore) || tiny_scale(p, q) != 0) {
+  const Calc largest = std::max({points, p.radius, q.radius});  // tiny_scale(p, q) != 0: nonzero, below kTinyCore
+  if (!(scale >= kTinyCore) || (largest < kTinyCore && largest != 0)) {
     if (decide_exactly(a, b)) return contact_cores(p, q, speculative, radius_free);
     return speculative_or_none();
   }
-  const Calc band = band_of(scale), tie = owner_tie(p, q);
+  const Calc band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * points;  // owner_tie(p, q)
   // With a polygon, the least penetration over the faces tells cores clearly apart or clearly
   // meeting at once, and a face separating them by more than the band ends the search; a point
   // or a segment against a point or a segment has no such faces, and their test is cheap.
   const bool polygon = std::max(p.size(), q.size()) > 2;
-  const Axis ax = polygon ? least_penetration(p, q, tie, radii - band) : Axis{};
+  const auto axis = [&](Calc stop_below) {
+    return least_penetration_with(p, faces_of(p, np), q, faces_of(q, nq), tie, stop_below);
+  };
+  const auto contact_on = [&](const Axis& found) { return contact_from_axis(p, q, found, speculative, np, nq); };
+  const Axis ax = polygon ? axis(radii - band) : Axis{};
   const Calc core_depth = ax.depth - radii;  // within 2 ties of the cores' least penetration
   const bool deep = polygon && core_depth > band + 2 * tie;
   if (deep || (!(polygon && core_depth < -band) && cores_intersect(p, q))) {
     if (!(deep || radii > band || decide_exactly(a, b))) return speculative_or_none();
-    return contact_from_axis(p, q, polygon ? ax : least_penetration(p, q, tie), speculative);
+    return contact_on(polygon ? ax : axis(-std::numeric_limits<Calc>::infinity()));
   }
+  // A face separating the shapes themselves by more than the band and the speculative distance.
+  if (polygon && ax.depth < -band - std::max(speculative, Calc(0))) return std::nullopt;
   const Closest cl = closest_points(p, q);
   const Calc gap = std::sqrt(cl.dist2) - radii;
   if (!(gap < -band || (!(gap > band) && decide_exactly(a, b)))) return speculative_or_none();
   if (!radius_free) {
     if (const std::optional<CoreContact> c = contact_from_closest(p, q, cl)) return c;
   }
-  return contact_from_axis(p, q, least_penetration(p, q, tie), speculative);
+  return contact_on(axis(-std::numeric_limits<Calc>::infinity()));
+}
+
+/// The contact of two primitives without a specialisation (contact_of_cores() on their cores).
+template <class A, class B>
+std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
+  const Core p = core_of(a), q = core_of(b);
+  return contact_of_cores(a, b, p, nullptr, q, nullptr, speculative);
 }
 
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
@@ -486,9 +524,21 @@ template <class A, class B>
 }
 
 template <class S>
+inline constexpr bool is_capsule_v = std::is_same_v<S, Capsule<scalar_of_t<S>>>;
+template <class S>
 inline constexpr bool is_hull_kind_v =
     std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
     std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
+
+/// A capsule and a box or polygon: contact_of_cores() with the faces' normals known (the
+/// capsule's sides by one square root, the box's from its axes, the polygon's cached). Kept out of
+/// line, as the other specialised pairs are: the dispatch inlines into the caller.
+template <class A, class B>
+[[gnu::noinline]] std::optional<CoreContact> contact_capsule_hull(const A& a, const B& b, Calc speculative) {
+  Hull ha, hb;
+  if (!(hull_of(a, ha) && hull_of(b, hb))) return contact_generic(a, b, speculative);
+  return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), speculative);
+}
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
 /// they overlap, or, with speculative > 0, when they are apart by at most speculative (rounded).
@@ -511,6 +561,8 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       if (apart_by_boxes(a, b, speculative)) return std::nullopt;
       return contact_hulls(a, b, speculative);
     }
+  } else if constexpr ((is_capsule_v<A> && is_hull_kind_v<B>) || (is_hull_kind_v<A> && is_capsule_v<B>)) {
+    return contact_capsule_hull(a, b, speculative);
   }
   return contact_generic(a, b, speculative);
 }
