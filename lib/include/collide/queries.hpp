@@ -200,8 +200,7 @@ std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc specu
 /// rounding keep their order, so that the ids stay put while such a pair slides.
 inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexcept {
   if (c.overlapping != than.overlapping) return c.overlapping;
-  const Calc tie =
-      kFaceOrderTie * kUnitRoundoff * std::max(c.points[0].cwiseAbs().maxCoeff(), than.points[0].cwiseAbs().maxCoeff());
+  const Calc tie = tie_of(std::max(c.points[0].cwiseAbs().maxCoeff(), than.points[0].cwiseAbs().maxCoeff()));
   return c.overlapping ? c.depth > than.depth + tie : c.separations[0] < than.separations[0] - tie;
 }
 

@@ -303,8 +303,12 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
 /// The tolerance within which a face does not take over from an equally deep face found before it
 /// (feature.hpp: ids stay put for parallel faces): a quarter of the pair's rounding unit, so that
 /// the chosen depth (within 2 ties of the least) stays within half a unit in either argument order.
+inline Calc tie_of(Calc scale) noexcept {
+  return kFaceOrderTie * kUnitRoundoff * scale;
+}
+/// tie_of() the pair's point scale.
 inline Calc owner_tie(const Core& p, const Core& q) noexcept {
-  return kFaceOrderTie * kUnitRoundoff * point_scale(p, q);
+  return tie_of(point_scale(p, q));
 }
 
 /// Contact of two dilated cores known to overlap, at their own scale (see contact_cores()).

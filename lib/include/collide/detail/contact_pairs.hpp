@@ -202,7 +202,7 @@ template <class A, class B>
     if (decide_exactly(a, b)) return contact_cores(p, q, speculative, radius_free);
     return speculative_or_none();
   }
-  const Calc band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * points;  // owner_tie(p, q)
+  const Calc band = band_of(scale), tie = tie_of(points);  // owner_tie(p, q)
   // With a polygon, the least penetration over the faces tells cores clearly apart or clearly
   // meeting at once, and a face separating them by more than the band ends the search; a point
   // or a segment against a point or a segment has no such faces, and their test is cheap.
@@ -313,7 +313,7 @@ FaceExcess face_excess(const Vec2c& c, Calc r, const ConvexPolygon<T>& b, Normal
     // Inside, a face equally deep up to rounding does not take over (kFaceOrderTie), so that ids
     // stay put on a ridge; a face the centre lies beyond always does, and outside, the largest
     // excess locates the closest feature.
-    if (e > out.excess + (out.excess < 0 && e < 0 ? kFaceOrderTie * kUnitRoundoff * si : Calc(0))) {
+    if (e > out.excess + (out.excess < 0 && e < 0 ? tie_of(si) : Calc(0))) {
       out.excess = e;
       out.face = unsigned(i);
     }
@@ -491,7 +491,7 @@ template <Scalar T, class B>
   // Inside, within a tie (kFaceOrderTie) of a ridge of the box's interior, equally deep behind two
   // faces, rounding cannot tell the faces apart: the w faces, then the negative side, win there,
   // so that a centre moving along the ridge keeps its face and id.
-  const Calc tie = kFaceOrderTie * kUnitRoundoff * scale;
+  const Calc tie = tie_of(scale);
   const bool along_w = std::max(ex, ey) > 0 ? ex >= ey : ex >= ey - tie;
   const bool positive = along_w ? s > tie : t > tie;
   const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
@@ -516,7 +516,7 @@ template <class A, class B>
   Hull ha, hb;
   if (!(hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore))
     return contact_generic(a, b, speculative);
-  const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = kFaceOrderTie * kUnitRoundoff * scale;
+  const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = tie_of(scale);
   const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
   const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
   if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative, ha.normals(), hb.normals());
