@@ -5,11 +5,14 @@
 /// its signed distance lies within the rounding band of touching. Specialised pairs:
 ///   - circle-circle: analytically;
 ///   - circle against a box: the centre's coordinates in the box's frame, clamped;
-///   - circle against a polygon: the centre's face excesses, then its closest point;
+///   - circle against a polygon: the centre's face excesses, then the face of the largest or a
+///     vertex at its end;
+///   - circle against a capsule: the centre against the segment;
 ///   - two boxes or polygons: the separating axis of least penetration over both shapes' face
-///     normals (taken from the stored axes for boxes), then reference-face clipping;
+///     normals (taken from the stored axes for boxes, whose depths have a closed form), then
+///     reference-face clipping;
 ///   - a capsule against a box or polygon: the generic steps below on the same known normals.
-/// Every other pair (circle-capsule, capsule-capsule, boxes flat on an axis, boxes thinner than
+/// Every other pair (capsule-capsule, boxes flat on an axis, boxes thinner than
 /// their corners' rounding, polygons of more than 8 vertices) runs contact_cores()'s steps on the
 /// generic cores, their least penetration or closest points deciding outside the band (a face
 /// separating the shapes by more than it ends the search); tiny pairs decide exactly first.
@@ -284,6 +287,64 @@ std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, 
   return contact_circles(a, b, sign, speculative);
 }
 
+/// Circle against capsule: the centre against the capsule's segment, the steps of
+/// contact_of_cores() for a point and a segment without building cores. A centre within the band
+/// of the segment (possibly on it), a capsule whose ends coincide and tiny pairs take the generic
+/// path. Kept out of line, as the other specialised pairs are.
+template <Scalar T>
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_capsule(const Circle<T>& a, const Capsule<T>& b,
+                                                                    Calc speculative) {
+  const Vec2c c = widen(a.center()), s0 = widen(b.a()), s1 = widen(b.b());
+  const Calc ra = a.radius(), rb = b.radius(), radii = ra + rb;
+  const Calc points = std::max({c.cwiseAbs().maxCoeff(), s0.cwiseAbs().maxCoeff(), s1.cwiseAbs().maxCoeff()});
+  const Calc scale = std::max(points, radii), band = band_of(scale);
+  if (!(std::min(scale, std::max({points, ra, rb})) >= kTinyCore) || s0 == s1)
+    return contact_generic(a, b, speculative);
+  // The closest points as closest_points() finds them: the centre against the segment, then
+  // each end against the centre when strictly closer.
+  const Vec2c d = s1 - s0;
+  const Calc t = std::clamp((c - s0).dot(d) / d.squaredNorm(), Calc(0), Calc(1));
+  Vec2c on_q = s0 + d * t;
+  Calc dist2 = (c - on_q).squaredNorm();
+  CoreFeature feature{t >= 1 ? 1u : 0u, t > 0 && t < 1};
+  if (feature.edge) feature.index = d.x() * (c.y() - s0.y()) - d.y() * (c.x() - s0.x()) < 0 ? 0u : 1u;
+  for (const unsigned k : {0u, 1u}) {
+    const Vec2c& end = k == 0 ? s0 : s1;
+    const Calc e2 = (end - c).squaredNorm();
+    if (e2 < dist2) {
+      dist2 = e2;
+      on_q = end;
+      feature = CoreFeature{k, false};
+    }
+  }
+  const Calc dist = std::sqrt(dist2);
+  if (!(dist > band)) return contact_generic(a, b, speculative);
+  const Calc gap = dist - radii;
+  if (!(gap < -band || (!(gap > band) && decide_exactly(a, b)))) {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  }
+  // As contact_from_closest(): beside the segment (no shorter than the offset) its normal, else
+  // the direction between the points.
+  const Vec2c dq = on_q - c;
+  Vec2c n = Vec2c::Zero();
+  if (feature.edge && !(d.squaredNorm() < dq.squaredNorm())) {
+    n = unit_of(Vec2c(d.y(), -d.x()));
+    if (n.dot(dq) < 0) n = -n;
+  }
+  const bool side = n != Vec2c::Zero();
+  const Calc along = side ? dq.dot(n) : norm_of(dq);
+  if (!side) n = unit_of(dq);
+  if (!(along > band_of(points))) return contact_generic(a, b, speculative);
+  CoreContact out;
+  out.normal = n;
+  out.depth = std::max(Calc(0), radii - along);
+  out.points[0] = ((c + n * ra) + (on_q - n * rb)) * 0.5;
+  out.separations[0] = along - radii;
+  out.ids[0] = id_of(CoreFeature{0, false}, feature);
+  out.count = 1;
+  return out;
+}
+
 /// The face of a polygon of at most 8 vertices that a circle's centre lies least deep behind (or
 /// farthest beyond), with its excess (the centre's signed distance to the face line) and the
 /// pair's rounding scale; apart when the centre lies beyond some face by more than the radius,
@@ -358,15 +419,36 @@ template <Scalar T>
     out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
     return out;
   }
-  // The closest point of the boundary lies on the face of largest excess or a neighbour: every
-  // excess is at most the distance, and the closest feature's faces attain it.
-  std::array<Vec2c, ConvexPolygon<T>::kInline> v;
-  for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
-  Closest cl;
-  closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
-                             face + m - 1, 3);
-  const Vec2c dq = cl.on_q - cl.on_p;
-  const Calc dist = norm_of(dq), gap = dist - r;
+  // Every excess is at most the distance: a centre projecting inside the face of largest excess is
+  // that excess away from the face. Beyond an end of it, that vertex is the closest point when the
+  // centre also projects beyond it on the neighbouring face; otherwise (rounding ranked the faces
+  // within a hair of each other) the three faces around are searched.
+  const std::size_t next = next_index(face, m);
+  const Vec2c v0 = widen(b[face]), v1 = widen(b[next]), d = v1 - v0;
+  const Calc along_face = (c - v0).dot(d);
+  CoreFeature feature{face, true};
+  Vec2c on_q = c - n * excess;
+  Calc dist = excess;
+  if (!(along_face > 0 && along_face < d.squaredNorm())) {
+    const bool first = !(along_face > 0);
+    const Vec2c vk = first ? v0 : v1;
+    const Vec2c other = widen(b[first ? (face == 0 ? m - 1 : face - 1) : next_index(next, m)]);
+    const Calc beyond = first ? (c - vk).dot(vk - other) : (c - vk).dot(other - vk);
+    if (first ? beyond >= 0 : beyond <= 0) {
+      feature = CoreFeature{unsigned(first ? face : next), false};
+      on_q = vk;
+    } else {
+      std::array<Vec2c, ConvexPolygon<T>::kInline> v;
+      for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
+      Closest cl;
+      closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
+                                 face + m - 1, 3);
+      feature = cl.feature_q;
+      on_q = cl.on_q;
+    }
+    dist = norm_of(on_q - c);
+  }
+  const Calc gap = dist - r;
   const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
   if (!overlapping) return speculative_or_none();
   if (!(dist > band)) {
@@ -376,13 +458,13 @@ template <Scalar T>
   }
   // As contact_from_closest(): inside a face its normal (see closest_normal()), at a vertex the
   // direction to it; one point midway.
-  const bool on_face = cl.feature_q.edge;
-  out.normal = on_face ? Vec2c(-normal(cl.feature_q.index)) : direction_of(dq, dist);
-  const Calc along = on_face ? dq.dot(out.normal) : dist;
+  const Vec2c dq = on_q - c;
+  out.normal = feature.edge ? Vec2c(-normal(feature.index)) : direction_of(dq, dist);
+  const Calc along = feature.edge ? dq.dot(out.normal) : dist;
   out.depth = std::max(Calc(0), r - along);
-  out.points[0] = ((c + out.normal * r) + cl.on_q) * 0.5;
+  out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
   out.separations[0] = along - r;
-  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  out.ids[0] = id_of(CoreFeature{0, false}, feature);
   return out;
 }
 
@@ -416,8 +498,8 @@ struct Rect {
 /// Builds k from a box with interior whose corners keep their order when computed (see hull_of).
 template <Scalar T>
 bool rect_of(const Aabb<T>& s, Rect& k) {
-  const Vec2c lo = widen(s.min()), hi = widen(s.max());
-  k = {(lo + hi) * 0.5, Vec2c(1, 0), (hi.x() - lo.x()) * 0.5, (hi.y() - lo.y()) * 0.5};
+  const Vec2c lo = widen(s.min()), hi = widen(s.max()), h = (hi - lo) * 0.5;
+  k = {(lo + hi) * 0.5, Vec2c(1, 0), h.x(), h.y()};
   return lo.x() < hi.x() && lo.y() < hi.y();
 }
 template <Scalar T>
@@ -465,14 +547,14 @@ template <Scalar T, class B>
   const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
   CoreContact out;
   out.count = 1;
-  if (ex > 0 || ey > 0) {
+  if (ex > 0 && ey > 0) {
     const Calc cs = std::clamp(s, -k.hx, k.hx), ct = std::clamp(t, -k.hy, k.hy);
     const Vec2c q = k.c + k.w * cs + v * ct;
     const Vec2c dq = q - c;
     const Calc dist = norm_of(dq), gap = dist - r;
     out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
     if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
-    if (ex > 0 && ey > 0 && dist > band) {
+    if (dist > band) {
       // Beyond a corner: the direction to it. Beyond one side, that side's normal (below): the
       // closest point's rounding at the box's scale would tilt the normal by about rounding /
       // dist, and a deep push along it would fall short of clearing the flat side.
@@ -484,6 +566,11 @@ template <Scalar T, class B>
       out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
       return out;
     }
+  } else if (ex > 0 || ey > 0) {
+    // Beside one side: the centre is its excess away from the box.
+    const Calc gap = std::max(ex, ey) * len - r;
+    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
   } else if (!(std::max(ex, ey) * len < -band) && !decide_exactly(a, b)) {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   }
@@ -505,6 +592,35 @@ template <Scalar T, class B>
   return out;
 }
 
+template <class S>
+inline constexpr bool is_box_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>>;
+
+/// The least-penetration axis of two boxes with hulls ha and hb (least_penetration_with() on
+/// their faces), each face's depth in closed form: along a unit n, (c_a - c_b) . n plus both
+/// boxes' half-widths along n. With unit axes u and v = perp(u) (the hulls' normals) and
+/// half-lengths X = h_x |w|, Y = h_y |w|, a box's half-width is X |u . n| + Y |v . n|: six dot
+/// products in all, where the supports take one per corner and face.
+template <class A, class B>
+Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hull& hb, Calc tie, Calc stop_below) {
+  Rect ka, kb;
+  rect_of(a, ka);
+  rect_of(b, kb);
+  const Vec2c ua = ha.normals()[1], ub = hb.normals()[1];           // faces 0..3: -v, u, v, -u (hull_of)
+  const Calc xa = ka.hx * ka.w.dot(ua), ya = ka.hy * ka.w.dot(ua);  // w . u = |w|
+  const Calc xb = kb.hx * kb.w.dot(ub), yb = kb.hy * kb.w.dot(ub);
+  // |u_a . u_b| = |v_a . v_b| and |v_a . u_b| = |u_a . v_b|, bit for bit.
+  const Calc cs = std::fabs(ua.dot(ub)), sn = std::fabs(perp(ua).dot(ub));
+  const Calc wua = xa + xb * cs + yb * sn, wva = ya + xb * sn + yb * cs;
+  const Calc wub = xb + xa * cs + ya * sn, wvb = yb + xa * sn + ya * cs;
+  const Vec2c off = ka.c - kb.c;
+  const Calc oua = off.dot(ua), ova = off.dot(perp(ua)), oub = off.dot(ub), ovb = off.dot(perp(ub));
+  const std::array<Calc, 4> dp{wva - ova, wua + oua, wva + ova, wua - oua};
+  const std::array<Calc, 4> dq{wvb + ovb, wub - oub, wvb - ovb, wub + oub};
+  return least_penetration_by(
+      faces_of(ha), faces_of(hb), [&](const Vec2c&, unsigned i) { return dp[i]; },
+      [&](const Vec2c&, unsigned i) { return dq[i]; }, Calc(0), tie, stop_below);
+}
+
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
 /// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
@@ -517,7 +633,12 @@ template <class A, class B>
   if (!(hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore))
     return contact_generic(a, b, speculative);
   const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = tie_of(scale);
-  const Axis ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
+  Axis ax;
+  if constexpr (is_box_v<A> && is_box_v<B>) {
+    ax = least_penetration_of_boxes(a, b, ha, hb, tie, -band);
+  } else {
+    ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
+  }
   const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
   if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative, ha.normals(), hb.normals());
   return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
@@ -561,6 +682,8 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       if (apart_by_boxes(a, b, speculative)) return std::nullopt;
       return contact_hulls(a, b, speculative);
     }
+  } else if constexpr (circle_a && is_capsule_v<B>) {
+    return contact_circle_capsule(a, b, speculative);
   } else if constexpr ((is_capsule_v<A> && is_hull_kind_v<B>) || (is_hull_kind_v<A> && is_capsule_v<B>)) {
     return contact_capsule_hull(a, b, speculative);
   }

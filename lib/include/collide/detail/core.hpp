@@ -392,37 +392,48 @@ struct Axis {
   unsigned face = 0;
 };
 
-/// Axis of least penetration among the faces of both cores (Minkowski-difference faces), with
-/// each core's faces listed by faces_p / faces_q (called as faces(f), f(unit normal, index)); a
-/// face's own support is its first vertex's (the core's extreme along it, up to rounding). A
-/// face (of q over p, or a later face of one core over an earlier one) is taken over the best so
-/// far only when it is shallower by more than `tie`, so that faces equally deep up to rounding
-/// (parallel faces, a side split by a vertex one ulp off its line) keep their order while the
-/// pair moves, and the depth found is within 2 tie of the least. Stops at the first face
+/// Axis of least penetration among the faces of two cores, each core's faces listed by faces_p /
+/// faces_q (called as faces(f), f(unit normal, index)) and each face's depth (the cores' overlap
+/// along its normal, radii included) given by depth_p / depth_q (called with the normal and the
+/// index). A face (of q over p, or a later face of one core over an earlier one) is taken over the
+/// best so far only when it is shallower by more than `tie`, so that faces equally deep up to
+/// rounding (parallel faces, a side split by a vertex one ulp off its line) keep their order while
+/// the pair moves, and the depth found is within 2 tie of the least. Stops at the first face
 /// shallower than `stop_below` and returns it (a separating face, when the caller needs only that).
-template <class FacesP, class FacesQ>
-Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie,
-                            Calc stop_below) {
+template <class FacesP, class FacesQ, class DepthP, class DepthQ>
+Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, DepthQ&& depth_q, Calc r, Calc tie,
+                          Calc stop_below) {
   Axis best, best_q;
   best.depth = best_q.depth = std::numeric_limits<Calc>::infinity();
-  const Calc r = p.radius + q.radius;
   bool stop = false;
   faces_p([&](const Vec2c& n, unsigned i) {
     if (stop) return;
-    const Calc d = p[i].dot(n) + support(q, -n) + r;
+    const Calc d = depth_p(n, i);
     stop = d < stop_below;
     if (d < best.depth - tie || stop) best = {n, d, 0, i};
   });
   if (stop) return best;
   faces_q([&](const Vec2c& n, unsigned i) {
     if (stop) return;
-    const Calc d = q[i].dot(n) + support(p, -n) + r;
+    const Calc d = depth_q(n, i);
     stop = d < stop_below;
     if (d < best_q.depth - tie || stop) best_q = {Vec2c(-n), d, 1, i};
   });
   if (best_q.depth < best.depth - tie || stop) best = best_q;
   if (best.owner < 0) best = {Vec2c(1, 0), r, -1, 0};  // two points: any direction will do
   return best;
+}
+
+/// least_penetration_by() with each face's depth from its own support, its first vertex's (the
+/// core's extreme along it, up to rounding), and the other core's support (Minkowski-difference
+/// faces).
+template <class FacesP, class FacesQ>
+Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie,
+                            Calc stop_below) {
+  const Calc r = p.radius + q.radius;
+  return least_penetration_by(
+      faces_p, faces_q, [&](const Vec2c& n, unsigned i) { return p[i].dot(n) + support(q, -n) + r; },
+      [&](const Vec2c& n, unsigned i) { return q[i].dot(n) + support(p, -n) + r; }, r, tie, stop_below);
 }
 
 /// least_penetration_with() over the faces of the cores' own edges (for_each_face).
