@@ -400,6 +400,7 @@ struct Axis {
 /// rounding (parallel faces, a side split by a vertex one ulp off its line) keep their order while
 /// the pair moves, and the depth found is within 2 tie of the least. Stops at the first face
 /// shallower than `stop_below` and returns it (a separating face, when the caller needs only that).
+/// r: the cores' radii, the depth of the answer when neither core has a face (two points).
 template <class FacesP, class FacesQ, class DepthP, class DepthQ>
 Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, DepthQ&& depth_q, Calc r, Calc tie,
                           Calc stop_below) {
