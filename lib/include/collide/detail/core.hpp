@@ -392,15 +392,14 @@ struct Axis {
   unsigned face = 0;
 };
 
-/// Axis of least penetration among the faces of two cores, each core's faces listed by faces_p /
-/// faces_q (called as faces(f), f(unit normal, index)) and each face's depth (the cores' overlap
-/// along its normal, radii included) given by depth_p / depth_q (called with the normal and the
-/// index). A face (of q over p, or a later face of one core over an earlier one) is taken over the
-/// best so far only when it is shallower by more than `tie`, so that faces equally deep up to
-/// rounding (parallel faces, a side split by a vertex one ulp off its line) keep their order while
-/// the pair moves, and the depth found is within 2 tie of the least. Stops at the first face
-/// shallower than `stop_below` and returns it (a separating face, when the caller needs only that).
-/// r: the cores' radii, the depth of the answer when neither core has a face (two points).
+/// Axis of least penetration among the faces of two cores, each core's faces listed by faces_p / faces_q (called
+/// as faces(f), f(unit normal, index)) and each face's depth (the cores' overlap along its normal, radii included)
+/// given by depth_p / depth_q (called with the normal and the index). A face (of q over p, or a later face of one
+/// core over an earlier one) is taken over the best so far only when it is shallower by more than `tie`, so that
+/// faces equally deep up to rounding (parallel faces, a side split by a vertex one ulp off its line) keep their
+/// order while the pair moves, and the depth found is within 2 tie of the least. Stops at the first face
+/// shallower than `stop_below` and returns it (a separating face, when the caller needs only that). r: the
+/// cores' radii, the depth of the answer when neither core has a face (two points).
 template <class FacesP, class FacesQ, class DepthP, class DepthQ>
 Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, DepthQ&& depth_q, Calc r, Calc tie,
                           Calc stop_below) {
