@@ -61,6 +61,27 @@ TYPED_TEST(Cast, BulletDoesNotTunnelThroughThinWall) {
   EXPECT_FALSE(overlap_at(bullet, v, wall, V(0, 0), double(r.t)));
 }
 
+TYPED_TEST(Cast, CircleGrazingACornerReachesItsDiscInOneStep) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // The circle passes the box's top-left corner 0.25 below the height where it would clear it:
+  // the face step brings it level with the left face, beside the corner, and the corner's disc
+  // is then one step away, where steps along the closest points' direction shrink geometrically.
+  const Aabb<T> box(V(-1, -1), V(1, 1));
+  const Circle<T> ball(V(-5, T(1.25)), T(0.5));
+  const V v(10, 0);
+  const CastResult<T> r = shape_cast(ball, v, box, V(0, 0), T(1));
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  EXPECT_LE(r.iterations, 1);
+  const double exact = (4 - std::sqrt(0.1875)) / 10;  // |centre - corner| = 0.5
+  EXPECT_LE(double(r.t), exact);
+  // The gap closes at 10 * 0.866 per unit time there: within the tolerance, t is that close.
+  EXPECT_GE(double(r.t), exact - cast_tolerance(ball, v, box, V(0, 0), T(1)) / 8);
+  EXPECT_NEAR(double(r.normal.x()), std::sqrt(0.75), 1e-5);
+  EXPECT_NEAR(double(r.normal.y()), -0.5, 1e-5);
+  EXPECT_FALSE(overlap_at(ball, v, box, V(0, 0), double(r.t)));
+}
+
 TYPED_TEST(Cast, BoxSlidingAlongFlatGroundHasAnAnswer) {
   using T = TypeParam;
   using V = Vec2<T>;

@@ -22,8 +22,9 @@
 /// - A Miss means the exact shapes are apart at every time in [0, max_t].
 /// - eps = 3 * target + 2 eps_T |w| max_t + 2 denorm_min_T |w| + 2 delta, with w = va - vb, |.|
 ///   the largest component, target = kCastTargetFactor * 2^-53 * M + 2^-500 and M = S + |w| max_t
-///   (S the largest absolute coordinate of both world bounding boxes, bounds(s, x)): the rounding
-///   of the moved cores, and of t down to T. delta = transform_tolerance(a, xa) +
+///   (S the largest absolute coordinate of both world bounding boxes, bounds(s, x), taken before
+///   its outward rounding to T for a primitive placed by the identity): the rounding of the
+///   moved cores, and of t down to T. delta = transform_tolerance(a, xa) +
 ///   transform_tolerance(b, xb) (overlap_tolerance(a, xa, b, xb); 0 for stored shapes placed by
 ///   the identity): the computed images lie within it of the exact ones, so the cast advances
 ///   them dilated by delta and the exact shapes stay apart wherever the dilated images do.
@@ -46,9 +47,12 @@
 /// the motion once, from s = 0: for two polygons they are the faces of the Minkowski difference
 /// and that one step reaches the first contact up to target (or proves a miss: a face separating
 /// that does not close). Where that face meets a vertex over it, the vertex and its foot on the
-/// face are the closest points, found without a search (face_witness()). Then each step takes
-/// the closest points' direction (the gap over |w| when rounding leaves it separating by no more
-/// than target) until the gap is within 2 target.
+/// face are the closest points, found without a search (face_witness()). Where the closest
+/// points are two vertices, each in the other's normal cone, the next step reaches the disc of
+/// that corner of the difference, aimed at 1.5 target: past the face step the motion lies within
+/// every face's offset, where the way into the dilated difference leads through that disc. Else
+/// each step takes the closest points' direction (the gap over |w| when rounding leaves it
+/// separating by no more than target) until the gap is within 2 target.
 /// The start needs no separate test: shapes that overlap stop at s = 0, and contact() gives them
 /// their normal and point.
 
@@ -110,6 +114,32 @@ inline bool face_witness(const Core& p, const Core& q, const FaceAxis& face, Clo
   return true;
 }
 
+/// Whether d, from vertex j of q to vertex i of p, lies in both vertices' normal cones: no edge
+/// from vertex j of q leads toward d, and none from vertex i of p leads away from it.
+inline bool in_vertex_cones(const Core& p, std::size_t i, const Core& q, std::size_t j, const Vec2c& d) noexcept {
+  const auto outward = [](const Core& c, std::size_t k, const Vec2c& dir) {
+    const std::size_t n = c.size();
+    if (n == 1) return true;
+    if (dir.dot(c[next_index(k, n)] - c[k]) > 0) return false;
+    return n == 2 || dir.dot(c[k == 0 ? n - 1 : k - 1] - c[k]) <= 0;
+  };
+  return outward(q, j, d) && outward(p, i, Vec2c(-d));
+}
+
+/// The time a point at d from a fixed centre, moving by w per unit time, takes to come within aim
+/// of it: +inf when it never does, 0 when it already is. Measured from the line's closest
+/// approach, so that a grazing line keeps its accuracy.
+inline Calc disc_entry_time(const Vec2c& d, const Vec2c& w, Calc aim) noexcept {
+  const Calc speed = norm_of(w), dist = norm_of(d);
+  if (!(dist > aim)) return 0;
+  if (!(speed > 0)) return std::numeric_limits<Calc>::infinity();
+  const Vec2c u = unit_of(w);
+  const Calc along = -d.dot(u), off = std::fabs(d.x() * u.y() - d.y() * u.x());
+  if (!(along > 0) || !(off < aim)) return std::numeric_limits<Calc>::infinity();
+  const Calc chord = std::sqrt((aim - off) * (aim + off));
+  return (dist - aim) / speed * ((dist + aim) / (along + chord));
+}
+
 /// Conservative advancement of core p moving by w per unit time against the fixed core q, from
 /// s = 0 up to s_max; both dilated by skin in all (the images' distance from the exact shapes),
 /// so that the exact shapes stay apart too.
@@ -156,10 +186,23 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     if (!on_face) cl = closest_points(pm, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
     if (gap <= 2 * target) return on_face ? hit_between(pm, q, cl, s, step, lead.normal) : hit(pm, cl, s, step);
-    // Then the closest points' direction; when rounding leaves it separating by no more than
+    // A vertex nearest a vertex, each in the other's normal cone: from within every face's
+    // offset by target (where the face step leaves the moving core), the only way into the
+    // dilated Minkowski difference leads through this corner's disc, so its entry time, aimed at
+    // 1.5 target, is safe; it lands in one step where a grazing motion would otherwise shrink
+    // its steps geometrically.
+    Calc ds = 0;
+    if (!on_face && !cl.feature_p.edge && !cl.feature_q.edge) {
+      const std::size_t i = cl.feature_p.index, j = cl.feature_q.index;
+      const Vec2c d = pm[i] - q[j];
+      if (in_vertex_cones(pm, i, q, j, d)) ds = disc_entry_time(d, w, r + 1.5 * target);
+    }
+    // Else the closest points' direction; when rounding leaves it separating by no more than
     // target, the gap itself falls no faster than |w|.
-    const Vec2c n = unit_of(cl.on_q - cl.on_p);
-    Calc ds = n == Vec2c::Zero() ? Calc(0) : safe_along(pm, n);
+    if (!(ds > 0)) {
+      const Vec2c n = unit_of(cl.on_q - cl.on_p);
+      ds = n == Vec2c::Zero() ? Calc(0) : safe_along(pm, n);
+    }
     if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
     if (!(ds > 0)) return hit(pm, cl, s, step);
     if (s + ds > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
@@ -182,12 +225,49 @@ inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const 
   return c;
 }
 
+/// The largest absolute coordinate of a primitive's box as computed in Calc, before bounds() pads
+/// it and rounds it outward to T: the values its core is computed from.
+template <Scalar T>
+Calc calc_scale_of(const Circle<T>& s) noexcept {
+  return widen(s.center()).cwiseAbs().maxCoeff() + s.radius();
+}
+template <Scalar T>
+Calc calc_scale_of(const Aabb<T>& s) noexcept {
+  return std::max(widen(s.min()).cwiseAbs().maxCoeff(), widen(s.max()).cwiseAbs().maxCoeff());
+}
+template <Scalar T>
+Calc calc_scale_of(const Obb<T>& s) noexcept {
+  const Vec2c u = widen(s.axis());
+  const Vec2c ext = (u * Calc(s.half_extents().x())).cwiseAbs() + (perp(u) * Calc(s.half_extents().y())).cwiseAbs();
+  return (widen(s.center()).cwiseAbs() + ext).maxCoeff();
+}
+template <Scalar T>
+Calc calc_scale_of(const Capsule<T>& s) noexcept {
+  return widen(s.a()).cwiseAbs().cwiseMax(widen(s.b()).cwiseAbs()).maxCoeff() + s.radius();
+}
+template <Scalar T>
+Calc calc_scale_of(const ConvexPolygon<T>& s) noexcept {
+  return scale_of(bounds(s));
+}
+template <Scalar T>
+Calc calc_scale_of(const Compound<T>& s) noexcept {
+  return scale_of(bounds(s));
+}
+
+/// The scale S of s placed by x: the largest absolute coordinate of its world bounding box,
+/// bounds(s, x); for a primitive placed by the identity, of that box before its outward rounding.
+template <AnyShape S>
+Calc world_scale_of(const S& s, const Transform<scalar_of_t<S>>& x) {
+  if (!x.is_identity()) return scale_of(bounds(s, x));
+  return visit_shape(s, [](const auto& c) { return calc_scale_of(c); });
+}
+
 /// The motion's scale M: the largest coordinate the moving shapes reach (relative motion), from
-/// their world bounding boxes.
+/// their world bounding boxes (world_scale_of()).
 template <AnyShape A, AnyShape B>
 Calc cast_scale(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
                 const Vec2c& w, Calc max_t) {
-  const Calc s = std::max(scale_of(bounds(a, xa)), scale_of(bounds(b, xb)));
+  const Calc s = std::max(world_scale_of(a, xa), world_scale_of(b, xb));
   return s + w.cwiseAbs().maxCoeff() * max_t;
 }
 

@@ -404,7 +404,8 @@ bool sweep_valid(const Sweep<T>& sw) noexcept {
 /// The motion's scale M of a pair of sweeps.
 template <AnyShape A, AnyShape B>
 Calc toi_scale(const A& a, const Sweep<scalar_of_t<A>>& sa, const B& b, const Sweep<scalar_of_t<A>>& sb) {
-  return sweep_scale(sa, scale_of(bounds(a))) + sweep_scale(sb, scale_of(bounds(b)));
+  const Transform<scalar_of_t<A>> local;
+  return sweep_scale(sa, world_scale_of(a, local)) + sweep_scale(sb, world_scale_of(b, local));
 }
 
 /// Upper bound on the relative speed of any two points of the bodies.
