@@ -117,7 +117,7 @@ Transform<T> gen_transform(double s) {
 /// The scale of a pair (its largest coordinate, at least 2^-20), for transforms at its scale.
 template <Scalar T>
 double scale_of_pair(const Shape<T>& a, const Shape<T>& b) {
-  return std::max({::collide::detail::box_scale(bounds(a)), ::collide::detail::box_scale(bounds(b)), 0x1p-20});
+  return std::max({::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)), 0x1p-20});
 }
 
 /// p moved by t when no moved value rounds (every position coordinate plus t exact in double and

@@ -225,41 +225,18 @@ inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const 
   return c;
 }
 
-/// The largest absolute coordinate of a primitive's box as computed in Calc, before bounds() pads
-/// it and rounds it outward to T: the values its core is computed from.
-template <Scalar T>
-Calc calc_scale_of(const Circle<T>& s) noexcept {
-  return widen(s.center()).cwiseAbs().maxCoeff() + s.radius();
-}
-template <Scalar T>
-Calc calc_scale_of(const Aabb<T>& s) noexcept {
-  return std::max(widen(s.min()).cwiseAbs().maxCoeff(), widen(s.max()).cwiseAbs().maxCoeff());
-}
-template <Scalar T>
-Calc calc_scale_of(const Obb<T>& s) noexcept {
-  const Vec2c u = widen(s.axis());
-  const Vec2c ext = (u * Calc(s.half_extents().x())).cwiseAbs() + (perp(u) * Calc(s.half_extents().y())).cwiseAbs();
-  return (widen(s.center()).cwiseAbs() + ext).maxCoeff();
-}
-template <Scalar T>
-Calc calc_scale_of(const Capsule<T>& s) noexcept {
-  return widen(s.a()).cwiseAbs().cwiseMax(widen(s.b()).cwiseAbs()).maxCoeff() + s.radius();
-}
-template <Scalar T>
-Calc calc_scale_of(const ConvexPolygon<T>& s) noexcept {
-  return scale_of(bounds(s));
-}
-template <Scalar T>
-Calc calc_scale_of(const Compound<T>& s) noexcept {
-  return scale_of(bounds(s));
-}
-
 /// The scale S of s placed by x: the largest absolute coordinate of its world bounding box,
 /// bounds(s, x); for a primitive placed by the identity, of that box before its outward rounding.
 template <AnyShape S>
 Calc world_scale_of(const S& s, const Transform<scalar_of_t<S>>& x) {
   if (!x.is_identity()) return scale_of(bounds(s, x));
-  return visit_shape(s, [](const auto& c) { return calc_scale_of(c); });
+  return visit_shape(s, [](const auto& c) {
+    if constexpr (is_compound_v<decltype(c)>) {
+      return scale_of(bounds(c));
+    } else {
+      return scale_of(calc_box(c));
+    }
+  });
 }
 
 /// The motion's scale M: the largest coordinate the moving shapes reach (relative motion), from

@@ -37,6 +37,48 @@ U round_down_to(Calc v) noexcept {
 }
 }  // namespace detail
 
+namespace detail {
+/// Largest absolute coordinate of a box: the scale of the rounding errors of what lies in it.
+template <Scalar T>
+Calc scale_of(const Aabb<T>& b) noexcept {
+  return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
+}
+
+/// A primitive's box as computed in Calc from its stored values, before bounds() pads it and
+/// rounds it outward to T: exact for an AABB and a polygon, a few roundings off otherwise.
+template <Scalar T>
+Aabb<Calc> calc_box(const Aabb<T>& s) noexcept {
+  return AabbAccess::unchecked<Calc>(widen(s.min()), widen(s.max()));
+}
+template <Scalar T>
+Aabb<Calc> calc_box(const Circle<T>& s) noexcept {
+  const Vec2c c = widen(s.center());
+  const Calc r = s.radius();
+  return AabbAccess::unchecked<Calc>((c.array() - r).matrix(), (c.array() + r).matrix());
+}
+template <Scalar T>
+Aabb<Calc> calc_box(const Capsule<T>& s) noexcept {
+  const Vec2c a = widen(s.a()), b = widen(s.b());
+  const Calc r = s.radius();
+  return AabbAccess::unchecked<Calc>((a.cwiseMin(b).array() - r).matrix(), (a.cwiseMax(b).array() + r).matrix());
+}
+template <Scalar T>
+Aabb<Calc> calc_box(const Obb<T>& s) noexcept {
+  const Vec2c c = widen(s.center()), u = widen(s.axis());
+  const Vec2c ext = (u * Calc(s.half_extents().x())).cwiseAbs() + (perp(u) * Calc(s.half_extents().y())).cwiseAbs();
+  return AabbAccess::unchecked<Calc>(c - ext, c + ext);
+}
+template <Scalar T>
+Aabb<Calc> calc_box(const ConvexPolygon<T>& s) noexcept {
+  Vec2<T> lo = s[0], hi = s[0];
+  for (const Vec2<T>& p : s.vertices()) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return AabbAccess::unchecked<Calc>(widen(lo), widen(hi));
+}
+}  // namespace detail
+
 /// Rounds a box computed in Calc outward to T, after padding it by the rounding of the few
 /// operations that computed it, so the result is never smaller than the exact box.
 template <Scalar U>
@@ -59,25 +101,20 @@ Aabb<T> bounds(const Aabb<T>& s) noexcept {
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Circle<T>& s) noexcept {
-  const Vec2c c = widen(s.center());
-  const Calc r = s.radius();
-  return bounds_from_calc<T>((c.array() - r).matrix(), (c.array() + r).matrix());
+  const Aabb<Calc> b = detail::calc_box(s);
+  return bounds_from_calc<T>(b.min(), b.max());
 }
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Capsule<T>& s) noexcept {
-  const Vec2c a = widen(s.a()), b = widen(s.b());
-  const Calc r = s.radius();
-  return bounds_from_calc<T>((a.cwiseMin(b).array() - r).matrix(), (a.cwiseMax(b).array() + r).matrix());
+  const Aabb<Calc> b = detail::calc_box(s);
+  return bounds_from_calc<T>(b.min(), b.max());
 }
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const Obb<T>& s) noexcept {
-  const Vec2c c = widen(s.center()), u = widen(s.axis());
-  const Vec2c v = perp(u);
-  const Calc hx = s.half_extents().x(), hy = s.half_extents().y();
-  const Vec2c ext = (u * hx).cwiseAbs() + (v * hy).cwiseAbs();
-  return bounds_from_calc<T>(c - ext, c + ext);
+  const Aabb<Calc> b = detail::calc_box(s);
+  return bounds_from_calc<T>(b.min(), b.max());
 }
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
@@ -96,12 +133,6 @@ Aabb<T> bounds(const Primitive<T>& s) noexcept {
 }
 
 namespace detail {
-
-/// Largest absolute coordinate of a box: the scale of the rounding errors of what lies in it.
-template <Scalar T>
-Calc box_scale(const Aabb<T>& b) noexcept {
-  return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
-}
 
 /// The box of primitive s's computed image under x, before any padding.
 template <class P>
@@ -153,7 +184,7 @@ class Compound {
       const Aabb<T> b = collide::bounds(c);
       lo = lo.cwiseMin(b.min());
       hi = hi.cwiseMax(b.max());
-      extent = std::max(extent, 2 * detail::box_scale(b));
+      extent = std::max(extent, 2 * detail::scale_of(b));
     }
     // Unchecked: children's boxes may exceed max_magnitude<T>() (see AabbAccess).
     return Compound(std::move(children), {}, detail::AabbAccess::unchecked<T>(lo, hi), extent);
@@ -175,7 +206,7 @@ class Compound {
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       xf.push_back(children[i].transform);
       const detail::Pose x = children[i].transform.pose();
-      const Calc local = std::visit([](const auto& s) { return detail::box_scale(collide::bounds(s)); }, shapes[i]);
+      const Calc local = std::visit([](const auto& s) { return detail::scale_of(collide::bounds(s)); }, shapes[i]);
       extent = std::max(extent, x.p.cwiseAbs().maxCoeff() + 2 * local);
       const Aabb<T> b = std::visit(
           [&](const auto& s) { return detail::placed_bounds<T>(s, x, detail::image_tolerance(x, local)); }, shapes[i]);

@@ -81,16 +81,49 @@ struct SweepPose {
   Vec2c position;  ///< image of the local origin
 };
 
-/// The pose of a sweep at time s, computed exactly as time_of_impact.hpp's motion defines it.
+namespace detail {
+
+/// The rotation (cos angle, sin angle) of a sweep at time s, as its motion defines it.
 template <Scalar T>
-SweepPose sweep_pose(const Sweep<T>& sweep, Calc s) noexcept {
+Vec2c sweep_rotation(const Sweep<T>& sweep, Calc s) noexcept {
   const Calc a0 = static_cast<Calc>(sweep.a0), a1 = static_cast<Calc>(sweep.a1);
   const Calc angle = a0 + (a1 - a0) * s;
-  const Calc c = std::cos(angle), sn = std::sin(angle);
+  return Vec2c(std::cos(angle), std::sin(angle));
+}
+
+/// The pose of a sweep at time s, given its rotation at s (sweep_rotation()).
+template <Scalar T>
+SweepPose sweep_pose_with(const Sweep<T>& sweep, const Vec2c& rotation, Calc s) noexcept {
+  const Calc c = rotation.x(), sn = rotation.y();
   const Vec2c c0 = widen(sweep.c0), c1 = widen(sweep.c1), lc = widen(sweep.local_center);
   const Calc cx = c0.x() + (c1.x() - c0.x()) * s, cy = c0.y() + (c1.y() - c0.y()) * s;
   const Calc rx = c * lc.x() - sn * lc.y(), ry = sn * lc.x() + c * lc.y();
-  return SweepPose{Vec2c(c, sn), Vec2c(cx - rx, cy - ry)};
+  return SweepPose{rotation, Vec2c(cx - rx, cy - ry)};
+}
+
+/// Poses of one sweep at many times. A sweep that does not turn (a1 == a0) has the angle a0 + (+0) at every
+/// s >= 0, so its rotation is computed once: the same bits as sweep_pose() at every s.
+template <Scalar T>
+class SweepPoser {
+ public:
+  explicit SweepPoser(const Sweep<T>& sweep) noexcept
+      : sweep_(sweep), turns_(sweep.a1 != sweep.a0), still_(turns_ ? Vec2c::Zero() : sweep_rotation(sweep, 0)) {}
+  SweepPose operator()(Calc s) const noexcept {
+    return sweep_pose_with(sweep_, turns_ ? sweep_rotation(sweep_, s) : still_, s);
+  }
+
+ private:
+  const Sweep<T>& sweep_;
+  bool turns_;
+  Vec2c still_;
+};
+
+}  // namespace detail
+
+/// The pose of a sweep at time s, computed exactly as time_of_impact.hpp's motion defines it.
+template <Scalar T>
+SweepPose sweep_pose(const Sweep<T>& sweep, Calc s) noexcept {
+  return detail::sweep_pose_with(sweep, detail::sweep_rotation(sweep, s), s);
 }
 
 namespace detail {
@@ -118,12 +151,20 @@ inline Calc reach_of(const Core& c, const Vec2c& center) noexcept {
   return r * (1 + kMotionBoundSlack);
 }
 
-/// Upper bound on the speed of any point of the core relative to the centre's world frame.
+/// reach_of() for a sweep's core, or 0 when the sweep does not turn: every use of a reach multiplies it by the
+/// turn rate, which is then +0.
 template <Scalar T>
-Calc sweep_speed(const Sweep<T>& sw, const Core& local) noexcept {
+Calc sweep_reach(const Sweep<T>& sw, const Core& local) noexcept {
+  return sw.a1 != sw.a0 ? reach_of(local, widen(sw.local_center)) : Calc(0);
+}
+
+/// Upper bound on the speed of any point of the core relative to the centre's world frame, given its reach
+/// (sweep_reach()).
+template <Scalar T>
+Calc sweep_speed(const Sweep<T>& sw, Calc reach) noexcept {
   const Calc travel = norm_of(widen(sw.c1) - widen(sw.c0));
   const Calc turn = std::fabs(static_cast<Calc>(sw.a1) - static_cast<Calc>(sw.a0));
-  return (travel + turn * reach_of(local, widen(sw.local_center))) * (1 + kMotionBoundSlack);
+  return (travel + turn * reach) * (1 + kMotionBoundSlack);
 }
 
 /// A sweep's contribution to the motion's scale M (see the contract at the top of this file).
@@ -282,9 +323,9 @@ template <Scalar T>
 CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max, Calc target,
                        Calc skin) {
   const Calc r = pl.radius + ql.radius + skin;
-  const Calc speed = sweep_speed(sp, pl) + sweep_speed(sq, ql);
+  const Calc reach_p = sweep_reach(sp, pl), reach_q = sweep_reach(sq, ql);
+  const Calc speed = sweep_speed(sp, reach_p) + sweep_speed(sq, reach_q);
   const Vec2c v = (widen(sp.c1) - widen(sp.c0)) - (widen(sq.c1) - widen(sq.c0));
-  const Calc reach_p = reach_of(pl, widen(sp.local_center)), reach_q = reach_of(ql, widen(sq.local_center));
   const Calc turning = (std::fabs(static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0)) * reach_p +
                         std::fabs(static_cast<Calc>(sq.a1) - static_cast<Calc>(sq.a0)) * reach_q) *
                        (1 + kMotionBoundSlack);
@@ -301,9 +342,10 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc curvature = (wp * wp * reach_p + wq * wq * reach_q) * (1 + kMotionBoundSlack);
   // Without curvature (no point off a centre turns) the Taylor bound is the linear one.
   const bool taylor = arms_p.kept && arms_q.kept && curvature > 0;
+  const SweepPoser pose_p(sp), pose_q(sq);
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
-    const SweepPose xp = sweep_pose(sp, s), xq = sweep_pose(sq, s);
+    const SweepPose xp = pose_p(s), xq = pose_q(s);
     const Core p = posed_core(pl, xp), q = posed_core(ql, xq);
     // The posed faces' normals: the kept local ones turned by the pose (unit to a few roundings, well inside
     // target), from p toward q.
@@ -413,11 +455,11 @@ template <AnyShape A, AnyShape B>
 Calc toi_speed(const A& a, const Sweep<scalar_of_t<A>>& sa, const B& b, const Sweep<scalar_of_t<A>>& sb) {
   Calc v = 0;
   visit_shape(a, [&](const auto& ca) {
-    for_each_primitive(ca, [&](const auto& pa) { v = std::max(v, sweep_speed(sa, core_of(pa))); });
+    for_each_primitive(ca, [&](const auto& pa) { v = std::max(v, sweep_speed(sa, sweep_reach(sa, core_of(pa)))); });
   });
   Calc w = 0;
   visit_shape(b, [&](const auto& cb) {
-    for_each_primitive(cb, [&](const auto& pb) { w = std::max(w, sweep_speed(sb, core_of(pb))); });
+    for_each_primitive(cb, [&](const auto& pb) { w = std::max(w, sweep_speed(sb, sweep_reach(sb, core_of(pb)))); });
   });
   return v + w;
 }

@@ -62,7 +62,7 @@ Calc local_extent(const S& s) {
   if constexpr (is_compound_v<S>) {
     return s.local_extent();
   } else {
-    return box_scale(bounds(s));
+    return scale_of(bounds(s));
   }
 }
 
@@ -134,7 +134,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc rounding_tolerance(
                                                                                 const Transform<scalar_of_t<A>>& xa,
                                                                                 const B& b,
                                                                                 const Transform<scalar_of_t<A>>& xb) {
-  const Calc s = std::max(detail::box_scale(bounds(a, xa)), detail::box_scale(bounds(b, xb)));
+  const Calc s = std::max(detail::scale_of(bounds(a, xa)), detail::scale_of(bounds(b, xb)));
   return kOverlapErrorFactor * kUnitRoundoff * s + kAbsoluteFloor + overlap_tolerance(a, xa, b, xb);
 }
 
@@ -183,8 +183,8 @@ template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc resolve_margin(
     const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb, Calc depth) {
   if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth);
-  const Calc sa = std::max(detail::box_scale(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
-  const Calc s = std::max(sa, detail::box_scale(bounds(b, xb)));
+  const Calc sa = std::max(detail::scale_of(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
+  const Calc s = std::max(sa, detail::scale_of(bounds(b, xb)));
   return detail::margin_of<scalar_of_t<A>>(s, sa, depth) + 2 * overlap_tolerance(a, xa, b, xb);
 }
 

@@ -110,7 +110,7 @@ bool exact_image(const Shape<T>& s, const Transform<T>& x) {
 template <Scalar T>
 double scaling_band(const Shape<T>& a, const Shape<T>& b, const Transform<T>& x) {
   const double q = widen(x.rotation()).norm();
-  const double s = std::max(collide::detail::box_scale(bounds(a)), collide::detail::box_scale(bounds(b)));
+  const double s = std::max(collide::detail::scale_of(bounds(a)), collide::detail::scale_of(bounds(b)));
   return 2 * std::fabs(q - 1) * 4 * s + 4 * 0x1p-53 * s;
 }
 
@@ -408,9 +408,9 @@ Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& o
       return;
     }
     // The built shape differs from the exact image by T's rounding of its values.
-    const double sw = collide::detail::box_scale(bounds(*w));
+    const double sw = collide::detail::scale_of(bounds(*w));
     const double band =
-        transform_tolerance(s, x) + 8 * detail::eps<T>() * (sw + 2 * collide::detail::box_scale(bounds(s)));
+        transform_tolerance(s, x) + 8 * detail::eps<T>() * (sw + 2 * collide::detail::scale_of(bounds(s)));
     if (placed != built) {
       j.v.disagreement = true;
       j.require(oracle::within_band(ps, oracle::as_exact_input(other), band),

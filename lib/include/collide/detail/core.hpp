@@ -168,12 +168,6 @@ inline Core scaled(const Core& c, int k) {
   return out;
 }
 
-/// Largest absolute coordinate of a shape's bounding box: the scale of its rounding errors.
-template <Scalar T>
-Calc scale_of(const Aabb<T>& b) noexcept {
-  return std::max(widen(b.min()).cwiseAbs().maxCoeff(), widen(b.max()).cwiseAbs().maxCoeff());
-}
-
 // ---------------------------------------------------------------------------------------------
 // Exact intersection of cores (closed sets). Every decision is an orient() sign or a comparison.
 
