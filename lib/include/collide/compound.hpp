@@ -68,14 +68,20 @@ Aabb<Calc> calc_box(const Obb<T>& s) noexcept {
   const Vec2c ext = (u * Calc(s.half_extents().x())).cwiseAbs() + (perp(u) * Calc(s.half_extents().y())).cwiseAbs();
   return AabbAccess::unchecked<Calc>(c - ext, c + ext);
 }
+/// The box of a polygon's stored vertices: exact.
 template <Scalar T>
-Aabb<Calc> calc_box(const ConvexPolygon<T>& s) noexcept {
+Aabb<T> vertex_box(const ConvexPolygon<T>& s) noexcept {
   Vec2<T> lo = s[0], hi = s[0];
   for (const Vec2<T>& p : s.vertices()) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  return AabbAccess::unchecked<Calc>(widen(lo), widen(hi));
+  return AabbAccess::unchecked<T>(lo, hi);
+}
+template <Scalar T>
+Aabb<Calc> calc_box(const ConvexPolygon<T>& s) noexcept {
+  const Aabb<T> b = vertex_box(s);
+  return AabbAccess::unchecked<Calc>(widen(b.min()), widen(b.max()));
 }
 }  // namespace detail
 
@@ -119,12 +125,7 @@ Aabb<T> bounds(const Obb<T>& s) noexcept {
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
 Aabb<T> bounds(const ConvexPolygon<T>& s) noexcept {
-  Vec2<T> lo = s[0], hi = s[0];
-  for (const Vec2<T>& p : s.vertices()) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return detail::AabbAccess::unchecked<T>(lo, hi);
+  return detail::vertex_box(s);
 }
 /// Conservative bounding box: contains the exact shape, a few ulps larger at most.
 template <Scalar T>
