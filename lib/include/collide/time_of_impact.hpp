@@ -101,8 +101,8 @@ SweepPose sweep_pose_with(const Sweep<T>& sweep, const Vec2c& rotation, Calc s) 
   return SweepPose{rotation, Vec2c(cx - rx, cy - ry)};
 }
 
-/// Poses of one sweep at many times. A sweep that does not turn (a1 == a0) has the angle a0 + (+0) at every
-/// s >= 0, so its rotation is computed once: the same bits as sweep_pose() at every s.
+/// Poses of one sweep at many times. A sweep that does not turn (a1 == a0) has the angle a0 + 0 * s, the same
+/// double at every s >= 0, so its rotation is computed once: the same bits as sweep_pose() at every s.
 template <Scalar T>
 class SweepPoser {
  public:
@@ -152,7 +152,7 @@ inline Calc reach_of(const Core& c, const Vec2c& center) noexcept {
 }
 
 /// reach_of() for a sweep's core, or 0 when the sweep does not turn: every use of a reach multiplies it by the
-/// turn rate, which is then +0.
+/// turn rate's magnitude, which is then +0.
 template <Scalar T>
 Calc sweep_reach(const Sweep<T>& sw, const Core& local) noexcept {
   return sw.a1 != sw.a0 ? reach_of(local, widen(sw.local_center)) : Calc(0);
