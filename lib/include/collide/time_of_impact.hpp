@@ -190,16 +190,15 @@ inline Arms arms_of(const Core& local, const Vec2c& center) {
   return a;
 }
 
-/// How a posed core leads along a fixed unit axis n over the next stretch of time: its support now, the fastest
-/// rate of its points near the support (within a quarter of its extent along n) and of all its points, and how
-/// far the others lie behind the support. With the curvature bound K of its motion, support(s + h) <= support +
-/// max(h near_rate, h all_rate - behind) + K h^2 / 2 for every h >= 0 (each point's coordinate along n has a
-/// second derivative of at most turn rate^2 times its arm).
+/// How a posed core leads along a fixed unit axis n over the next stretch of time: for each of its points that
+/// may lead (none both further behind the support and slower than another), how far it lies behind the support
+/// and its rate now. With the curvature bound K of its motion, support(s + h) <= support + max_i(rate_i h -
+/// behind_i) + K h^2 / 2 for every h >= 0 (each point's coordinate along n has a second derivative of at most
+/// turn rate^2 times its arm).
 struct Lead {
-  Calc support = 0;
-  Calc near_rate = 0;
-  Calc all_rate = 0;
-  Calc behind = std::numeric_limits<Calc>::infinity();
+  std::array<Calc, 8> behind;
+  std::array<Calc, 8> rate;
+  std::size_t count = 0;
 };
 
 /// Lead of the posed core p (arms turned by rotation) moving its centre at velocity and turning at turn per unit
@@ -207,29 +206,25 @@ struct Lead {
 inline Lead lead_along(const Core& p, const Arms& arms, const Vec2c& rotation, const Vec2c& n, const Vec2c& velocity,
                        Calc turn) {
   std::array<Calc, 8> along, rate;
-  Calc lo = std::numeric_limits<Calc>::infinity();
-  Lead out;
-  out.support = -std::numeric_limits<Calc>::infinity();
+  Calc support = -std::numeric_limits<Calc>::infinity();
   const Calc slide = n.dot(velocity);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec2c arm = turned(rotation, arms.arm[i]);
     along[i] = p[i].dot(n);
     rate[i] = slide + turn * (n.y() * arm.x() - n.x() * arm.y());
-    out.support = std::max(out.support, along[i]);
-    lo = std::min(lo, along[i]);
+    support = std::max(support, along[i]);
   }
-  const Calc near = out.support - (out.support - lo) * 0.25;
-  out.near_rate = out.all_rate = -std::numeric_limits<Calc>::infinity();
-  Calc next = -std::numeric_limits<Calc>::infinity();
+  Lead out;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    out.all_rate = std::max(out.all_rate, rate[i]);
-    if (along[i] >= near) {
-      out.near_rate = std::max(out.near_rate, rate[i]);
-    } else {
-      next = std::max(next, along[i]);
+    bool dominated = false;
+    for (std::size_t j = 0; j < p.size() && !dominated; ++j) {
+      dominated =
+          j != i && along[j] >= along[i] && rate[j] >= rate[i] && (along[j] > along[i] || rate[j] > rate[i] || j < i);
     }
+    if (dominated) continue;
+    out.behind[out.count] = support - along[i];
+    out.rate[out.count++] = rate[i];
   }
-  out.behind = out.support - next;  // +inf when every point is near
   return out;
 }
 
@@ -240,16 +235,14 @@ inline Calc first_reach(Calc room, Calc c, Calc k) noexcept {
 }
 
 /// The time the separation (room = separation - target > 0) of p leading along n and q along -n may take to fall
-/// to target: the first reach of each of the four quadratic bounds that the two leads give, less the rounding of
+/// to target: the first reach of the quadratic bound of each pair of their leading points, less the rounding of
 /// the rates (rate_error) and the slack of the result.
 inline Calc lead_step(Calc room, const Lead& lp, const Lead& lq, Calc rate_error, Calc curvature) noexcept {
   Calc h = std::numeric_limits<Calc>::infinity();
-  for (int k = 0; k < 4; ++k) {
-    const bool far_p = k & 1, far_q = k & 2;
-    const Calc ahead = (far_p ? lp.behind : 0) + (far_q ? lq.behind : 0);
-    if (!(ahead < std::numeric_limits<Calc>::infinity())) continue;  // nothing behind
-    const Calc c = (far_p ? lp.all_rate : lp.near_rate) + (far_q ? lq.all_rate : lq.near_rate) + rate_error;
-    h = std::min(h, first_reach(room + ahead, c, curvature));
+  for (std::size_t i = 0; i < lp.count; ++i) {
+    for (std::size_t j = 0; j < lq.count; ++j) {
+      h = std::min(h, first_reach(room + lp.behind[i] + lq.behind[j], lp.rate[i] + lq.rate[j] + rate_error, curvature));
+    }
   }
   return h * (1 - kMotionBoundSlack);
 }
