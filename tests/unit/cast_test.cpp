@@ -366,6 +366,8 @@ TEST(CastRegression, HitPointAlongTheClosestPointsNotTheFaceNormal) {
   EXPECT_LE(distance_at(r.point, b, vb, r.t), 2 * eps);
 }
 
+// The sweeps below are written {local centre, centre at 0, centre at 1, angle at 0, angle at 1}.
+
 /// time_of_impact(a, sa, b, sb, 1) hits within 16 steps (a quarter of the limit), and the shapes,
 /// posed as the sweeps say at t, are apart and within twice the tolerance.
 template <class A, class B, Scalar T>
@@ -381,18 +383,6 @@ void expect_prompt_hit(const A& a, const Sweep<T>& sa, const B& b, const Sweep<T
   EXPECT_LE(distance(as_double(a), at(sa), as_double(b), at(sb)), 2 * toi_tolerance(a, sa, b, sb, T(1)));
 }
 
-/// A sweep in the numbers of Box2D's b2Sweep: local centre, centre at 0 and 1, angle at 0 and 1.
-template <Scalar T>
-Sweep<T> sweep_of(Vec2<T> local_center, Vec2<T> c0, Vec2<T> c1, T a0, T a1) {
-  Sweep<T> s;
-  s.local_center = local_center;
-  s.c0 = c0;
-  s.c1 = c1;
-  s.a0 = a0;
-  s.a1 = a1;
-  return s;
-}
-
 TEST(TimeOfImpact, CornerBehindTheSupportThatTurnsFasterBoundsTheStep) {
   // A box turning 0.65 rad as it passes a still ball: the corner that first touches the ball lies
   // behind the support along the closest points when a step is taken, and outruns it. A bound from
@@ -403,11 +393,11 @@ TEST(TimeOfImpact, CornerBehindTheSupportThatTurnsFasterBoundsTheStep) {
       Aabb<double>::make(V(-0x1.8ecf3416a18b4p-2, 0x1.26a1d06bfc048p-2), V(0x1.4ba98a7e40df4p-3, 0x1.4be3d2945f77p+0))
           .value();
   const V c_ball(0x1.e6f5ea4c465e1p+0, -0x1.d5986c7d05c95p+0);
-  const Sweep<double> still = sweep_of(V(0x1.0ce3547307815p-2, 0x1.a2de905d1f274p-3), c_ball, c_ball,
-                                       -0x1.5181f81fdf726p+0, -0x1.5181f81fdf726p+0);
-  const Sweep<double> turn =
-      sweep_of(V(-0x1.b366803e5a581p-4, -0x1.4505fa3e4648dp-7), V(0x1.075d85d059c3ep+1, 0x1.f73bc128a5708p-1),
-               V(0x1.eb01839611ba8p-2, -0x1.7f4e876afb874p-1), 0x1.300a122a27fd2p+1, 0x1.b9bb5b260d1dap+0);
+  const Sweep<double> still{V(0x1.0ce3547307815p-2, 0x1.a2de905d1f274p-3), c_ball, c_ball, -0x1.5181f81fdf726p+0,
+                            -0x1.5181f81fdf726p+0};
+  const Sweep<double> turn{V(-0x1.b366803e5a581p-4, -0x1.4505fa3e4648dp-7),
+                           V(0x1.075d85d059c3ep+1, 0x1.f73bc128a5708p-1),
+                           V(0x1.eb01839611ba8p-2, -0x1.7f4e876afb874p-1), 0x1.300a122a27fd2p+1, 0x1.b9bb5b260d1dap+0};
   expect_prompt_hit(ball, still, box, turn);
   expect_prompt_hit(box, turn, ball, still);
 }
@@ -423,9 +413,9 @@ TEST(CastRegression, CornerBehindTheSupportButFasterDoesNotHoldEveryStepBack) {
           .value();
   const Circle<double> ball(V(0x1.a5ea132a1e0d2p-1, 0x1.9ce5df04fea48p-3), 0x1.7f50eeed38107p-1);
   const V c_box(0x1.274904b6ccf1cp-1, 0x1.0dcbcf4a63df8p-2), c_ball(0x1.b5aa8996e805cp-1, 0x1.10c29b9792252p-1);
-  const Sweep<double> turn = sweep_of(V(0x1.ca09e2956fdd3p-4, -0x1.11f085069a10bp-2), c_box, c_box, 0x1.f922bd556789p-2,
-                                      -0x1.872cf88746698p-3);
-  const Sweep<double> still = sweep_of(V(0x1.fd0aeeb55d4d5p-3, 0x1.16346a6a6a7ep-4), c_ball, c_ball, -0.0, 0.0);
+  const Sweep<double> turn{V(0x1.ca09e2956fdd3p-4, -0x1.11f085069a10bp-2), c_box, c_box, 0x1.f922bd556789p-2,
+                           -0x1.872cf88746698p-3};
+  const Sweep<double> still{V(0x1.fd0aeeb55d4d5p-3, 0x1.16346a6a6a7ep-4), c_ball, c_ball, -0.0, 0.0};
   expect_prompt_hit(box, turn, ball, still);
   expect_prompt_hit(ball, still, box, turn);
 }
@@ -437,10 +427,10 @@ TEST(CastRegression, TurningBoxPassingACapsuleConvergesInFloat) {
   const Capsule<float> capsule =
       Capsule<float>::make(V(0x1.286fbap-2f, 0x1.eb2346p-1f), V(-0x1.c8d2ccp-3f, 0x1.a24bap-4f), 0x1.8cd2e8p-3f)
           .value();
-  const Sweep<float> turn = sweep_of(V(-0x1.98da0ep-3f, -0x1.8a80b6p-3f), V(0x1.05741cp+1f, -0x1.bd49e8p-1f),
-                                     V(-0x1.dbbbe6p+0f, -0x1.78f24ap+1f), -0x1.4c840ep+1f, -0x1.cd8f74p+0f);
-  const Sweep<float> slide = sweep_of(V(-0x1.16891p-2f, 0x1.903bb6p-3f), V(-0x1.0f3028p+0f, -0x1.73656ep-1f),
-                                      V(-0x1.e1f4b4p-1f, -0x1.e8c90ap-1f), 0x1.25344ap-2f, 0x1.25344ap-2f);
+  const Sweep<float> turn{V(-0x1.98da0ep-3f, -0x1.8a80b6p-3f), V(0x1.05741cp+1f, -0x1.bd49e8p-1f),
+                          V(-0x1.dbbbe6p+0f, -0x1.78f24ap+1f), -0x1.4c840ep+1f, -0x1.cd8f74p+0f};
+  const Sweep<float> slide{V(-0x1.16891p-2f, 0x1.903bb6p-3f), V(-0x1.0f3028p+0f, -0x1.73656ep-1f),
+                           V(-0x1.e1f4b4p-1f, -0x1.e8c90ap-1f), 0x1.25344ap-2f, 0x1.25344ap-2f};
   expect_prompt_hit(box, turn, capsule, slide);
   expect_prompt_hit(capsule, slide, box, turn);
 }
