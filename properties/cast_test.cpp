@@ -157,7 +157,8 @@ Sweep<T> gen_sweep(const Shape<T>& s, const Vec2c& toward, double size) {
                   : move == 1 ? Vec2c((toward - lc) * (double(*rc::gen::inRange(1, 9)) / 4))
                               : Vec2c(grid(-8, 8), grid(-8, 8)) * (size / 4);
   sw.c1 = to_t<T>(widen(sw.c0) + d);
-  const std::vector<double> turns = {0, 0.25, -0.25, 0.5, 1, -2, 1e-6, 0.125};
+  // Twice 0: a pair neither of which turns is cast as a translation.
+  const std::vector<double> turns = {0, 0, 0.25, -0.25, 0.5, 1, -2, 1e-6, 0.125};
   sw.a1 = T(*rc::gen::elementOf(turns) * 2 * std::numbers::pi);
   return sw;
 }

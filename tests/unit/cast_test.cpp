@@ -241,6 +241,39 @@ TYPED_TEST(Cast, TimeOfImpactWithoutRotationAgreesWithTheCast) {
   EXPECT_NEAR(double(cast.t), 0.5, 1e-5);
 }
 
+TYPED_TEST(Cast, TimeOfImpactOfBodiesThatDoNotTurnReachesACornerDiscInOneStep) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // The ball of CircleGrazingACornerReachesItsDiscInOneStep, its body held at a fixed angle
+  // (a1 == a0) with its centre of rotation off the ball's, passing the top-left corner of a box
+  // that comes toward it: neither body turns, so the pair is a translation and the corner's disc
+  // is one step away, where the bounds for turning bodies shrink their steps geometrically.
+  const Circle<T> ball(V(0, 0), T(0.5));
+  const Aabb<T> box(V(-1, -1), V(1, 1));
+  const T angle = T(0.75);
+  const Sweep<T> sa{V(T(0.25), T(-0.125)), V(T(-4.75), T(1.375)), V(T(3.25), T(1.375)), angle, angle};
+  const Sweep<T> sb{V(0, 0), V(3, 0), V(1, 0), T(0), T(0)};
+  // The ball's centre: the body's centre minus the turned local centre, moving by (8, 0); the
+  // box's top-left corner starts at (2, 1) and moves by (-2, 0).
+  const SweepPose start = sweep_pose(sa, 0);
+  const double cx = start.position.x(), cy = start.position.y();
+  const double exact = (2 - cx - std::sqrt(0.25 - (cy - 1) * (cy - 1))) / 10;  // first contact
+  for (const bool swapped : {false, true}) {
+    const CastResult<T> r = swapped ? time_of_impact(box, sb, ball, sa, T(1)) : time_of_impact(ball, sa, box, sb, T(1));
+    ASSERT_EQ(r.outcome, CastOutcome::Hit);
+    EXPECT_LE(r.iterations, 1);
+    EXPECT_LE(double(r.t), exact);
+    EXPECT_GE(double(r.t), exact - toi_tolerance(ball, sa, box, sb, T(1)) / 8);
+    // At the corner: the normal from the ball's centre to it, the point on it, both at t.
+    const Vec2<double> centre(cx + 8 * double(r.t), cy), corner(2 - 2 * double(r.t), 1);
+    const Vec2<double> n = (corner - centre).normalized() * (swapped ? -1.0 : 1.0);
+    EXPECT_NEAR(double(r.normal.x()), n.x(), 1e-5);
+    EXPECT_NEAR(double(r.normal.y()), n.y(), 1e-5);
+    EXPECT_NEAR(double(r.point.x()), corner.x(), 1e-5);
+    EXPECT_NEAR(double(r.point.y()), corner.y(), 1e-5);
+  }
+}
+
 }  // namespace
 }  // namespace collide::test
 

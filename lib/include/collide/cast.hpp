@@ -162,7 +162,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
   };
   const auto each_axis = [&](auto&& f) { each_face([&](const FaceAxis& face) { f(face.normal); }); };
   const auto hit = [&](const Core& pm, const Closest& cl, Calc s, int step) {
-    return hit_between(pm, q, cl, s, step, best_axis(pm, q, cl, each_axis));
+    return hit_between(pm, q, cl, s, step, nullptr, each_axis);
   };
   // Face axes first: under translation the separation along a fixed axis falls exactly linearly,
   // so every face's bound from s = 0 holds at once and the largest is safe. For polygons these
@@ -185,7 +185,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     const bool on_face = step == 0 && face_witness(pm, q, lead, cl);
     if (!on_face) cl = closest_points(pm, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
-    if (gap <= 2 * target) return on_face ? hit_between(pm, q, cl, s, step, lead.normal) : hit(pm, cl, s, step);
+    if (gap <= 2 * target) return hit_between(pm, q, cl, s, step, on_face ? &lead.normal : nullptr, each_axis);
     // A vertex nearest a vertex, each in the other's normal cone: from within every face's
     // offset by target (where the face step leaves the moving core), the only way into the
     // dilated Minkowski difference leads through this corner's disc, so its entry time, aimed at

@@ -45,6 +45,9 @@
 /// the closest points' direction. Every point of a body moves at most V per
 /// unit of time relative to the other, so from a gap g the bodies cannot meet before
 /// (g - target) / V: the step when rounding leaves no axis separating by more than target. A
+/// pair of bodies neither of which turns (a1 == a0) only translates: it is cast as shape_cast()
+/// casts it, from the poses at s = 0 (two polygons in one step, a grazing corner through its
+/// disc), its cores dilated by how far the poses' rounding strays from that translation. A
 /// compound whose children carry their own transforms is advanced on its children's images,
 /// which lie within placement_tolerance() of the exact ones: the cores are dilated by it, as
 /// shape_cast() dilates by overlap_tolerance().
@@ -128,16 +131,37 @@ SweepPose sweep_pose(const Sweep<T>& sweep, Calc s) noexcept {
 
 namespace detail {
 
-/// The core placed by a pose (every point mapped and rounded).
-inline Core posed_core(const Core& c, const SweepPose& pose) {
-  Core out;
+/// Fills out with the core c placed by a pose (every point mapped and rounded).
+inline void pose_core(const Core& c, const SweepPose& pose, Core& out) {
+  out.clear();
   const Calc qc = pose.rotation.x(), qs = pose.rotation.y();
   for (const Vec2c& p : c.pts()) {
     out.push(Vec2c(qc * p.x() - qs * p.y() + pose.position.x(), qs * p.x() + qc * p.y() + pose.position.y()));
   }
   out.radius = c.radius;
-  return out;
 }
+
+/// The core of one sweep posed step after step. A sweep that does not move (c1 == c0, a1 == a0) adds
+/// (c1 - c0) * s = ±0 of one sign to its position at every s >= 0, and its rotation is computed once
+/// (SweepPoser), so its pose has the same bits at every s and the core is posed once.
+template <Scalar T>
+class PosedCore {
+ public:
+  PosedCore(const Core& local, const Sweep<T>& sweep, const SweepPoser<T>& poser)
+      : local_(local), still_(sweep.c1 == sweep.c0 && sweep.a1 == sweep.a0) {
+    if (still_) pose_core(local_, poser(0), core_);
+  }
+  /// The core placed by pose, the pose of the sweep at some s >= 0.
+  const Core& at(const SweepPose& pose) {
+    if (!still_) pose_core(local_, pose, core_);
+    return core_;
+  }
+
+ private:
+  const Core& local_;
+  bool still_;
+  Core core_;
+};
 
 /// n turned by the rotation (cos, sin).
 inline Vec2c turned(const Vec2c& rotation, const Vec2c& n) noexcept {
@@ -304,17 +328,38 @@ inline Calc turning_face_step(const Core& f, const BodyMotion& mf, const Core& o
   return h * (1 - kMotionBoundSlack);
 }
 
+/// Conservative advancement of two local cores whose sweeps do not turn (a1 == a0): each pose only
+/// translates, so the pair is cast as shape_cast() casts it (advance_linear()), from the cores posed at
+/// s = 0 and at the difference of the centres' velocities, with the point taken to time s by the
+/// velocity of q. A pose at s lies within jitter of the pose at 0 moved by (c1 - c0) s: the rounding
+/// of c0 + (c1 - c0) s and of its offset by the rotated local centre, a few units of 2^-53 M per body
+/// (M bounds every position; target / 4 is 64 of them), and of the velocities themselves over s <= 1.
+/// The cores are dilated by it, so the posed shapes and the continuous motion stay apart wherever
+/// the cast proves them apart; a hit's gap grows by at most 2 jitter, within the contract's eps.
+template <Scalar T>
+CoreCast advance_translating(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max,
+                             Calc target, Calc skin) {
+  Core p, q;
+  pose_core(pl, sweep_pose(sp, 0), p);
+  pose_core(ql, sweep_pose(sq, 0), q);
+  const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
+  const Calc jitter = target / 4 + 4 * kUnitRoundoff * (vp.cwiseAbs().sum() + vq.cwiseAbs().sum());
+  CoreCast c = advance_linear(p, q, vp - vq, s_max, target, skin + jitter);
+  if (c.outcome == CastOutcome::Hit) c.point += vq * c.s;
+  return c;
+}
+
 /// Conservative advancement of two local cores moved by their sweeps, from s = 0 to s_max, both dilated by skin
 /// in all (the images' distance from the exact shapes). Along a fixed axis n the separation falls no faster than
 /// n . (centre velocity of p - that of q) plus each body's turn rate times its reach, and along a face turning
 /// with its body no faster than turning_face_step() allows, so every face normal of both posed cores and the
-/// closest points' direction bound a safe step, and the largest is taken (a translating
-/// pair of polygons steps to its first contact at once; a box sliding along flat ground is a miss in one step);
-/// when rounding leaves no axis separating by more than target, the gap itself falls no faster than the bound on
-/// all motion.
+/// closest points' direction bound a safe step, and the largest is taken; when rounding leaves no axis separating by
+/// more than target, the gap itself falls no faster than the bound on all motion. A pair neither of which turns is
+/// advance_translating()'s.
 template <Scalar T>
 CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max, Calc target,
                        Calc skin) {
+  if (sp.a1 == sp.a0 && sq.a1 == sq.a0) return advance_translating(pl, sp, ql, sq, s_max, target, skin);
   const Calc r = pl.radius + ql.radius + skin;
   const Calc reach_p = sweep_reach(sp, pl), reach_q = sweep_reach(sq, ql);
   const Calc speed = sweep_speed(sp, reach_p) + sweep_speed(sq, reach_q);
@@ -336,10 +381,11 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   // Without curvature (no point off a centre turns) the Taylor bound is the linear one.
   const bool taylor = arms_p.kept && arms_q.kept && curvature > 0;
   const SweepPoser pose_p(sp), pose_q(sq);
+  PosedCore posed_p(pl, sp, pose_p), posed_q(ql, sq, pose_q);
   Calc s = 0;
   for (int step = 0; step < kCastMaxIterations; ++step) {
     const SweepPose xp = pose_p(s), xq = pose_q(s);
-    const Core p = posed_core(pl, xp), q = posed_core(ql, xq);
+    const Core &p = posed_p.at(xp), &q = posed_q.at(xq);
     // The posed faces' normals: the kept local ones turned by the pose (unit to a few roundings, well inside
     // target), from p toward q.
     const auto each_axis = [&](auto&& f) {
@@ -407,9 +453,7 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
     const bool on_face = face_witness(p, q, widest, cl);
     if (!on_face) cl = closest_points(p, q);
     const Calc gap = std::sqrt(cl.dist2) - r;
-    const auto hit = [&] {
-      return hit_between(p, q, cl, s, step, on_face ? widest.normal : best_axis(p, q, cl, each_axis));
-    };
+    const auto hit = [&] { return hit_between(p, q, cl, s, step, on_face ? &widest.normal : nullptr, each_axis); };
     if (gap <= 2 * target) return hit();
     // The closest points' direction (when not the widest face's normal, already bounded).
     const Vec2c n = unit_of(cl.on_q - cl.on_p);

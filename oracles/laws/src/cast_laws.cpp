@@ -83,19 +83,26 @@ std::string describe_placed(const Shape<T>& s, const Transform<T>& x) {
   return describe(s) + " placed at p=" + vec(x.position()) + " q=" + vec(x.rotation());
 }
 
+/// The parts of s: each child of a compound as a one-child compound under its own transform, or s.
+template <Scalar T>
+std::vector<Shape<T>> parts_of(const Shape<T>& s) {
+  std::vector<Shape<T>> out;
+  if (const auto* c = std::get_if<Compound<T>>(&s)) {
+    for (std::size_t i = 0; i < c->children().size(); ++i) {
+      out.push_back(Compound<T>::make_placed({{c->children()[i], c->child_transform(i)}}).value());
+    }
+  } else {
+    out.push_back(s);
+  }
+  return out;
+}
+
 /// The exact primitives of s placed by x, one oracle input each (a compound child under its own
 /// transform, then under x).
 template <Scalar T>
 std::vector<oracle::Placed> placed_parts(const Shape<T>& s, const Transform<T>& x) {
   std::vector<oracle::Placed> out;
-  if (const auto* c = std::get_if<Compound<T>>(&s)) {
-    for (std::size_t i = 0; i < c->children().size(); ++i) {
-      const Compound<T> one = Compound<T>::make_placed({{c->children()[i], c->child_transform(i)}}).value();
-      out.push_back(oracle::placed(Shape<T>(one), x));
-    }
-  } else {
-    out.push_back(oracle::placed(s, x));
-  }
+  for (const Shape<T>& part : parts_of(s)) out.push_back(oracle::placed(part, x));
   return out;
 }
 
@@ -104,6 +111,33 @@ template <Scalar T>
 CastResult<T> cast_of(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
   if (in.xa.is_identity() && in.xb.is_identity()) return shape_cast(a, in.va, b, in.vb, in.max_t);
   return shape_cast(a, in.xa, in.va, b, in.xb, in.vb, in.max_t);
+}
+
+/// A hit's normal and point where the shapes are apart at t: the normal points from a toward b
+/// (beyond the point along it lies only b's side, and back along it only a's; for compounds, for
+/// some pair of parts, the pair that met), and the point lies between the two surfaces, within the
+/// gap (<= eps) of both. far_a(x, s, d): x lies farther than d from s (a or one of its parts) at t;
+/// far_b likewise for b. size: the larger of the shapes' sizes.
+template <Scalar T, class Part, class FarA, class FarB>
+void judge_normal_and_point(Verdict& v, const CastResult<T>& r, double size, double eps, const Part& a,
+                            const std::vector<Part>& parts_a, FarA&& far_a, const Part& b,
+                            const std::vector<Part>& parts_b, FarB&& far_b) {
+  const double L = std::max(size, 256 * eps);
+  const Vec2<double> p = widen(r.point), n = widen(r.normal);
+  // A normal found at a gap of a few roundings is good to about 1/100 rad: L / 32 of slack.
+  const double slack = 2 * eps + 16 * detail::eps<T>() * (L + p.cwiseAbs().maxCoeff()) + L / 32;
+  bool sides = false;
+  for (const Part& ca : parts_a) {
+    for (const Part& cb : parts_b) {
+      sides = sides || (far_a(Vec2<double>(p + n * L), ca, L - slack) && far_b(Vec2<double>(p - n * L), cb, L - slack));
+    }
+  }
+  if (!sides)
+    fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)",
+         describe_result(r));
+  const double reach = 2 * eps + 8 * detail::eps<T>() * (std::fabs(p.x()) + std::fabs(p.y()));
+  if (far_a(p, a, reach) || far_b(p, b, reach))
+    fail(v, "the point within the tolerance of both shapes at t", describe_result(r));
 }
 
 /// The account of a cast input: both shapes with their placements, the motion.
@@ -159,29 +193,11 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
         fail(v, "apart on [0, t] (t no later than the first contact)", "the exact shapes meet in [0, t]: tunnelled");
       if (!oracle::meets_during(ea, in.va, eb, in.vb, t, t, eps))
         fail(v, "the exact shapes within the tolerance at t", "farther apart at t");
-      // The normal points from a toward b: beyond the point along it lies only b's side, and
-      // back along it only a's.
-      const double L = std::max({size_of(a, in.xa), size_of(b, in.xb), 256 * eps});
-      const Vec2<double> p = widen(r.point), n = widen(r.normal);
-      // A normal found at a gap of a few roundings is good to about 1/100 rad: L / 32 of slack.
-      const double slack = 2 * eps + 16 * detail::eps<T>() * (L + p.cwiseAbs().maxCoeff()) + L / 32;
-      // A compound: for some pair of children (the pair that met).
-      bool sides = false;
-      const std::vector<oracle::Placed> pb = placed_parts(b, in.xb);
-      for (const oracle::Placed& ca : placed_parts(a, in.xa)) {
-        for (const oracle::Placed& cb : pb) {
-          sides = sides || (far_at(Vec2<double>(p + n * L), ca, in.va, t, L - slack) &&
-                            far_at(Vec2<double>(p - n * L), cb, in.vb, t, L - slack));
-        }
-      }
-      if (!sides)
-        fail(v, "point + L normal at least L - slack from a and point - L normal from b (normal toward b)",
-             describe_result(r));
-      // The point lies between the two surfaces, within the gap (<= eps) of both.
-      const double reach = 2 * eps + 8 * detail::eps<T>() * (std::fabs(p.x()) + std::fabs(p.y()));
-      if (far_at(p, ea, in.va, t, reach) || far_at(p, eb, in.vb, t, reach)) {
-        fail(v, "the point within the tolerance of both shapes at t", describe_result(r));
-      }
+      judge_normal_and_point(
+          v, r, std::max(size_of(a, in.xa), size_of(b, in.xb)), eps, ea, placed_parts(a, in.xa),
+          [&](const Vec2<double>& x, const oracle::Placed& s, double d) { return far_at(x, s, in.va, t, d); }, eb,
+          placed_parts(b, in.xb),
+          [&](const Vec2<double>& x, const oracle::Placed& s, double d) { return far_at(x, s, in.vb, t, d); });
       break;
     }
     case CastOutcome::InvalidInput:
@@ -353,6 +369,21 @@ Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const 
     if (!meets(t, eps)) fail(v, "the posed shapes within the tolerance at t", "farther apart");
     const double len = std::hypot(double(r.normal.x()), double(r.normal.y()));
     if (!(std::fabs(len - 1) <= 8 * detail::eps<T>())) fail(v, "a unit normal", "|normal| = " + num(len));
+  }
+  if (r.hit() && v.ok && !meets(t, 0)) {
+    // Apart at t: the normal and point as for a shape cast, on the shapes posed at t.
+    const SweepPose pa = sweep_pose(sa, t), pb = sweep_pose(sb, t);
+    const auto far_posed = [](const SweepPose& pose) {
+      return [pose](const Vec2<double>& x, const Shape<T>& s, double d) {
+        if (d <= 0) return true;
+        const auto dot = point_shape(x);
+        return !dot ||
+               !oracle::meets_posed(*dot, Vec2<double>(1, 0), Vec2<double>(0, 0), s, pose.rotation, pose.position, d);
+      };
+    };
+    const Transform<T> local;
+    judge_normal_and_point(v, r, std::max(size_of(a, local), size_of(b, local)), eps, a, parts_of(a), far_posed(pa), b,
+                           parts_of(b), far_posed(pb));
   }
   // Swapped: same time, reversed normal. A hit at t = 0 of shapes that overlap or touch within
   // the tolerance there has a contact normal, judged by its own law: inside that band the two

@@ -88,16 +88,15 @@ void for_each_kept_face(const KeptFaces& k, const Core& c, F&& f) {
   for (std::size_t i = 0; i < k.count; ++i) f(k.normal[i], k.index[i]);
 }
 
-/// The direction that separates the cores best among the closest-point direction and the axes
-/// each_axis(f) lists (every face normal, from p toward q). At a small gap the closest points are
-/// only a few roundings apart and their direction is off by up to about rounding / gap; a face
-/// normal is exact to rounding, and for a face nearest a vertex it separates as well as the gap
-/// itself. (Along a direction off by 2e-4 rad, a sliver 128 long can show a negative separation
-/// at a gap of 5e-7.)
+/// The direction that separates the cores best among the closest points' unit direction d (zero
+/// when they coincide) and the axes each_axis(f) lists (every face normal, from p toward q). At a
+/// small gap the closest points are only a few roundings apart and their direction is off by up to
+/// about rounding / gap; a face normal is exact to rounding, and for a face nearest a vertex it
+/// separates as well as the gap itself. (Along a direction off by 2e-4 rad, a sliver 128 long can
+/// show a negative separation at a gap of 5e-7.)
 template <class Axes>
-Vec2c best_axis(const Core& p, const Core& q, const Closest& cl, Axes&& each_axis) {
-  Vec2c best = unit_of(cl.on_q - cl.on_p);
-  if (best == Vec2c::Zero()) best = Vec2c(1, 0);
+Vec2c best_axis(const Core& p, const Core& q, const Vec2c& d, Axes&& each_axis) {
+  Vec2c best = d == Vec2c::Zero() ? Vec2c(1, 0) : d;
   Calc best_sep = separation_along(p, q, best);
   each_axis([&](const Vec2c& n) {
     const Calc sep = separation_along(p, q, n);
@@ -106,20 +105,22 @@ Vec2c best_axis(const Core& p, const Core& q, const Closest& cl, Axes&& each_axi
   return best;
 }
 
-/// Hit at time s for cores p, q (already moved there) that are apart, with the given normal
-/// (best_axis()) and the point midway between the closest points of the two surfaces.
-inline CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Calc s, int iterations,
-                            const Vec2c& normal) {
+/// Hit at time s for cores p, q (already moved there) that are apart, with the point midway
+/// between the closest points of the two surfaces. Its normal is *face_normal where the closest
+/// points meet that face (face_witness()), else best_axis() over each_axis.
+template <class Axes>
+CoreCast hit_between(const Core& p, const Core& q, const Closest& cl, Calc s, int iterations, const Vec2c* face_normal,
+                     Axes&& each_axis) {
   CoreCast out;
   out.outcome = CastOutcome::Hit;
   out.s = s;
   out.iterations = iterations;
-  out.normal = normal;
+  const Vec2c d = unit_of(cl.on_q - cl.on_p);
+  out.normal = face_normal ? *face_normal : best_axis(p, q, d, each_axis);
   // The surface points lie along the closest points' own direction (accurate whenever the radii
   // are not small next to the rounding; with small radii it hardly matters).
-  Vec2c d = unit_of(cl.on_q - cl.on_p);
-  if (d == Vec2c::Zero()) d = out.normal;
-  out.point = ((cl.on_p + d * p.radius) + (cl.on_q - d * q.radius)) * 0.5;
+  const Vec2c along = d == Vec2c::Zero() ? out.normal : d;
+  out.point = ((cl.on_p + along * p.radius) + (cl.on_q - along * q.radius)) * 0.5;
   return out;
 }
 
@@ -174,6 +175,8 @@ CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
   Core best_p, best_q;
   visit_shape(a, [&](const auto& ca) {
     visit_shape(b, [&](const auto& cb) {
+      // Only a compound has later pairs to rank against the best.
+      constexpr bool ranked = is_compound_v<decltype(ca)> || is_compound_v<decltype(cb)>;
       for_each_primitive(ca, [&](const auto& pa) {
         for_each_primitive(cb, [&](const auto& pb) {
           // A later pair only has to be followed up to the earliest answer so far, that time included:
@@ -186,8 +189,7 @@ CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
           if (c.outcome != CastOutcome::Miss &&
               (!open || c.s < best.s || (c.s == best.s && pair_before(p, q, best_p, best_q)))) {
             best = c;
-            best_p = p;
-            best_q = q;
+            if constexpr (ranked) best_p = p, best_q = q;
           }
           best.iterations = iterations;
         });

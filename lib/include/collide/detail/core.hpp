@@ -28,6 +28,11 @@ class Core {
     }
     push_big(p);
   }
+  /// Drops every point (the radius stays), so that the core can be filled again in place.
+  void clear() noexcept {
+    n_ = 0;
+    big_.clear();
+  }
   std::span<const Vec2c> pts() const noexcept { return {n_ > small_.size() ? big_.data() : small_.data(), n_}; }
   std::size_t size() const noexcept { return n_; }
   const Vec2c& operator[](std::size_t i) const noexcept { return pts()[i]; }

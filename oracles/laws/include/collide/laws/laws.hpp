@@ -378,7 +378,9 @@ Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t);
 /// contract with eps = toi_tolerance(): a valid answer with 0 <= t <= max_t; at each sample time
 /// f * t (f in samples, within [0, 1]; f * max_t after a miss) the shapes placed exactly at
 /// sweep_pose() are apart (oracle::meets_posed); at a hit's t they are within eps; a unit normal;
-/// the swapped query gives the same t and the reversed normal.
+/// where they are apart at t, the normal points from a toward b and the point lies within the
+/// tolerance of both, as cast_law() judges them; the swapped query gives the same t and the
+/// reversed normal.
 template <Scalar T>
 Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const Sweep<T>& sb, T max_t,
                 std::span<const double> samples);
