@@ -168,6 +168,94 @@ TYPED_TEST(Manifolds, SpeculativeDistanceAddsNearPoints) {
   EXPECT_GT(double(std::max(spec->separations[0], spec->separations[1])), 0.0);
 }
 
+/// A capsule whose segment starts on a box's corner (up to rounding) and leaves it along a face's
+/// normal: the clipped segment lies on the side plane, rounding clips all of it, and the point
+/// comes from the witness candidates. It must be the midway one, half the depth inside the box
+/// from the corner, not the corner itself (on the box's surface, the whole depth inside the capsule).
+TEST(ManifoldRegression, CapsuleEndOnABoxCornerAlongItsFaceNormalGetsAMidwayPoint) {
+  using V = Vec2<double>;
+  const Obb<double> box = *Obb<double>::make_with_axis(V(-0x1.6p+9, 0x1.cp+8), V(0x1.8p+7, 0x1p+7),
+                                                       V(0x1.3333333333333p-1, 0x1.999999999999ap-1));
+  const V start(-0x1.e666666666666p+8, 0x1.0666666666668p+9);  // the box's corner c + hx u - hy v, to rounding
+  const Capsule<double> capsule = *Capsule<double>::make(start, start + V(256, -192), 64);  // along -v
+  for (const bool swapped : {false, true}) {
+    const auto c = swapped ? contact(capsule, box) : contact(box, capsule);
+    ASSERT_TRUE(c.has_value());
+    ASSERT_EQ(c->count, 1);
+    const V n = swapped ? V(-c->normal) : c->normal;  // from the box toward the capsule
+    EXPECT_NEAR(n.x(), 0.8, 1e-12);
+    EXPECT_NEAR(n.y(), -0.6, 1e-12);
+    EXPECT_NEAR(c->depth, 64.0, 1e-9);
+    EXPECT_NEAR(c->separations[0], -64.0, 1e-9);
+    const V midway = start - n * 32.0;
+    EXPECT_NEAR((c->points[0] - midway).norm(), 0.0, 1e-9) << "point " << c->points[0].transpose();
+  }
+}
+
+/// A circle centred on the end of a flat box (a segment): moved off along the normal either way,
+/// its closest feature is the end vertex; centred on it, the contact comes from the segment's face
+/// but must name the same vertex, so that the id does not change as the circle moves through.
+TEST(ManifoldRegression, CircleCentredOnTheEndOfAFlatBoxNamesTheEndVertex) {
+  using V = Vec2<double>;
+  const Obb<double> flat = *Obb<double>::make_with_axis(V(0x1.3333333333334p+1, -0x1.1cccccccccccdp+4), V(0, 3),
+                                                        V(0x1.3333333333333p-1, 0x1.999999999999ap-1));
+  const V end(0, -16);  // c + 3 perp(u), computed exactly
+  const V off = V(0.6, 0.8) * 0x1p-14;
+  const auto at = contact(flat, *Circle<double>::make(end, 1));
+  ASSERT_TRUE(at.has_value());
+  EXPECT_EQ(at->ids[0].kind_a, FeatureKind::Vertex);
+  for (const double k : {-1.0, 1.0}) {
+    const auto moved = contact(flat, *Circle<double>::make(end + off * k, 1));
+    ASSERT_TRUE(moved.has_value());
+    EXPECT_EQ(moved->ids[0], at->ids[0]) << "moved by " << k << " x " << off.transpose();
+  }
+}
+
+/// A small square at 45 degrees to a large box's face: its two faces toward the box are equally
+/// anti-parallel and span the reference face equally, up to rounding at 10^7. The first must stay
+/// the incident face, at the square and moved either way, so that the points keep their ids.
+TEST(ManifoldRegression, SquareAt45DegreesToTheReferenceFaceKeepsItsIncidentFace) {
+  using V = Vec2<double>;
+  const Obb<double> big = *Obb<double>::make_with_axis(V(8437440, -7291456), V(3145728, 4194304),
+                                                       V(-0x1.6a09e667f3bccp-1, 0x1.6a09e667f3bccp-1));
+  const auto square = [](const V& at) { return *Obb<double>::make_with_axis(at, V(16384, 16384), V(-1, 0)); };
+  const V at(12631744, -7291456);
+  const auto c = contact(big, square(at));
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  for (const double k : {-1.0, 1.0}) {
+    const auto moved = contact(big, square(at + V(48, 64) * k));
+    ASSERT_TRUE(moved.has_value());
+    ASSERT_EQ(moved->count, 2);
+    EXPECT_EQ(moved->ids[0], c->ids[0]) << "moved by " << k << " x (48, 64)";
+    EXPECT_EQ(moved->ids[1], c->ids[1]) << "moved by " << k << " x (48, 64)";
+  }
+}
+
+/// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
+/// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
+/// between child pairs is measured at their deepest points, which the added point is not).
+TEST(ManifoldRegression, SpeculativeDistanceKeepsTheChildPairOfAnOverlappingCompound) {
+  using V = Vec2<float>;
+  const Obb<float> tilted = *Obb<float>::make_with_axis(V(0x1.eec4fp-19f, -0x1.5d89d8p-17f), V(0x1p-19f, 0x1.4p-18f),
+                                                        V(-0x1.89d89ep-2f, -0x1.d89d8ap-1f));
+  const Compound<float> a({Primitive<float>(tilted)});
+  const Capsule<float> dot = *Capsule<float>::make(V(0x1.6p-17f, -0x1.6p-17f), V(0x1.6p-17f, -0x1.6p-17f), 0x1.8p-19f);
+  const Aabb<float> box = *Aabb<float>::make(V(-0x1p-17f, 0), V(-0x1.4p-18f, 0x1.8p-18f));
+  const Transform<float> at = *Transform<float>::make_translation(V(0x1p-16f, -0x1p-16f));
+  const Compound<float> b =
+      *Compound<float>::make_placed({{Primitive<float>(dot), Transform<float>()}, {Primitive<float>(box), at}});
+  const auto plain = contact(a, b);
+  ASSERT_TRUE(plain.has_value());
+  for (int k = -22; k <= -12; ++k) {
+    const auto spec = contact(a, b, std::ldexp(1.0f, k));
+    ASSERT_TRUE(spec.has_value());
+    EXPECT_EQ(spec->normal, plain->normal) << "speculative 2^" << k;
+    EXPECT_EQ(spec->depth, plain->depth) << "speculative 2^" << k;
+    EXPECT_EQ(spec->ids[0].child_b, plain->ids[0].child_b) << "speculative 2^" << k;
+  }
+}
+
 /// A compound's ids name the child pair that produced the contact.
 TYPED_TEST(Manifolds, CompoundIdsNameTheChildren) {
   using T = TypeParam;

@@ -188,6 +188,24 @@ TYPED_TEST(Queries, CompoundPushClearsAChildLyingOnThePushLine) {
   EXPECT_EQ(still_overlapping, 0);
 }
 
+/// A point on a segment, the point a compound's child placed by a transform far from its own
+/// coordinates: moving the compound rounds that transform's position, at its magnitude, so the
+/// margin must come from it too, not only from the compound's box around the origin.
+TYPED_TEST(Queries, ResolvePushesACompoundWhoseChildTransformIsFarFromItsBox) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Transform<T> far = Transform<T>::make_translation(V(-16, -16)).value();
+  const Compound<T> point =
+      Compound<T>::make_placed({{Primitive<T>(Circle<T>(V(16, 16), 0)), far}}).value();  // at the origin
+  const Compound<T> segment({Primitive<T>(Capsule<T>(V(T(0.0625), T(0.0625)), V(T(-0.0625), T(-0.0625)), 0))});
+  ASSERT_TRUE(overlaps(point, segment));
+  const V v = resolve(point, segment);
+  const auto moved = translated(point, v);
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_FALSE(overlaps(*moved, segment)) << "push " << v.transpose();
+  EXPECT_LE(double(v.norm()), double(resolve_margin(point, segment, T(0))));
+}
+
 TYPED_TEST(Queries, DistanceHandComputed) {
   using T = TypeParam;
   using V = Vec2<T>;

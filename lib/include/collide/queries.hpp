@@ -195,12 +195,20 @@ std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc specu
   }
 }
 
+/// The largest coordinate of a contact's deepest point (the least separation, the first of
+/// equals). A speculative distance only adds points farther apart, so this scale is the same with
+/// and without it.
+inline Calc deepest_point_scale(const CoreContact& c) noexcept {
+  const std::size_t k = c.count > 1 && c.separations[1] < c.separations[0] ? 1 : 0;
+  return c.points[k].cwiseAbs().maxCoeff();
+}
+
 /// Overlapping contacts before speculative ones, then the deeper (or the nearer) by more than a
-/// tie (kFaceOrderTie units of roundoff of the points' scale): child pairs equally deep up to
-/// rounding keep their order, so that the ids stay put while such a pair slides.
+/// tie (kFaceOrderTie units of roundoff of the deepest points' scale): child pairs equally deep up
+/// to rounding keep their order, so that the ids stay put while such a pair slides.
 inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexcept {
   if (c.overlapping != than.overlapping) return c.overlapping;
-  const Calc tie = tie_of(std::max(c.points[0].cwiseAbs().maxCoeff(), than.points[0].cwiseAbs().maxCoeff()));
+  const Calc tie = tie_of(std::max(deepest_point_scale(c), deepest_point_scale(than)));
   return c.overlapping ? c.depth > than.depth + tie : c.separations[0] < than.separations[0] - tie;
 }
 
@@ -374,11 +382,31 @@ Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
 
 }  // namespace detail
 
+namespace detail {
+
+/// The largest stored magnitude that moving s rounds to T: its box's coordinates and, for a
+/// compound, the position of each child placed by a transform (a move shifts that position).
+template <AnyShape S>
+Calc moved_scale(const S& s) {
+  return visit_shape(s, [](const auto& c) {
+    Calc m = scale_of(bounds(c));
+    if constexpr (is_compound_v<decltype(c)>) {
+      for (std::size_t i = 0; c.has_child_transforms() && i < c.children().size(); ++i) {
+        m = std::max(m, widen(c.child_transform(i).position()).cwiseAbs().maxCoeff());
+      }
+    }
+    return m;
+  });
+}
+
+}  // namespace detail
+
 /// The margin resolve() adds beyond the computed depth, from the magnitudes that round:
 /// 4 * 64 * 2^-53 * S (four times the relative part of rounding_tolerance: the depth is computed
 /// in double from both shapes' coordinates, S as in rounding_tolerance), plus 8 eps_T (S_a +
-/// depth), where S_a is the largest absolute coordinate of bounds(a) alone: it covers rounding
-/// a's moved coordinates (each within S_a + depth) to T, and does not grow with b's extent. Plus 16
+/// depth), where S_a is the largest absolute coordinate of bounds(a) alone, or of a compound
+/// child's position when larger (detail::moved_scale()): it covers rounding a's moved coordinates
+/// (each within S_a + depth) to T, and does not grow with b's extent. Plus 16
 /// subnormal units of double and two of T for rounding near zero (a push along a diagonal moves
 /// each coordinate by a whole unit: sqrt(2) units in all), plus 2 placement_tolerance of each
 /// shape (a compound with child transforms is imaged once for the depth and once for the test).
@@ -387,8 +415,8 @@ Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
 template <AnyShape A, AnyShape B>
 Calc resolve_margin(const A& a, const B& b, Calc depth) {
   using T = scalar_of_t<A>;
-  const Calc sa = detail::scale_of(bounds(a));
-  const Calc s = std::max(sa, detail::scale_of(bounds(b)));
+  const Calc sa = detail::moved_scale(a);
+  const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
   return detail::margin_of<T>(s, sa, depth) + 2 * (placement_tolerance(a) + placement_tolerance(b));
 }
 
@@ -452,7 +480,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> res
   return detail::visit_shape(a, [&](const auto& ca) {
     return detail::visit_shape(b, [&](const auto& cb) -> Vec2<T> {
       const Calc extra = 2 * (placement_tolerance(ca) + placement_tolerance(cb));
-      return detail::resolve_as<T>(ca, cb, detail::scale_of(bounds(ca)), extra,
+      return detail::resolve_as<T>(ca, cb, detail::moved_scale(ca), extra,
                                    [&](const Vec2<T>& v) { return detail::moved_overlaps(ca, v, cb); });
     });
   });

@@ -272,13 +272,14 @@ std::string ids_text(const Contact<T>& c) {
 }
 
 /// Whether the child pair that moved's ids name differs from c's and, on the unmoved shapes,
-/// overlaps as deeply as c within the point bound: a compound's contact is the deepest among its
-/// child pairs, and either of two pairs tied for the deepest may be reported. Such a tie can hold
-/// at one configuration only (a child pair whose depth peaks there, as a point at a circle's
-/// centre, beside one whose depth falls on one side and rises on the other), where the motion
-/// changes the deepest pair.
+/// overlaps as deeply as c within the point bound plus twice the move's length: a compound's
+/// contact is the deepest among its child pairs, and a pair's depth changes by at most the length
+/// of a move, so a pair that is deepest after b moves by +t and by -t is, unmoved, within 2 |t| of
+/// the deepest. That is how a motion changes the deepest pair at one configuration only (a child
+/// pair whose depth peaks there, as a point at a circle's centre, beside one whose depth falls on
+/// one side and rises on the other).
 template <Scalar T>
-bool tied_child_pairs(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, const Contact<T>& moved) {
+bool tied_child_pairs(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, const Contact<T>& moved, double move) {
   const FeatureId &was = c.ids[0], &now = moved.ids[0];
   if (was.child_a == now.child_a && was.child_b == now.child_b) return false;
   const std::vector<Placed<T>> ka = detail::placed_primitives_of(a), kb = detail::placed_primitives_of(b);
@@ -286,7 +287,23 @@ bool tied_child_pairs(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c,
   if (pa == nullptr || pb == nullptr) return false;
   const auto other = std::visit(
       [&](const auto& x, const auto& y) { return contact(x, pa->transform, y, pb->transform); }, pa->shape, pb->shape);
-  return other && std::fabs(double(other->depth) - double(c.depth)) <= point_bound(a, b, double(c.depth));
+  return other && std::fabs(double(other->depth) - double(c.depth)) <= point_bound(a, b, double(c.depth)) + 2 * move;
+}
+
+/// Whether the face that moved's contact names is, on the unmoved shapes, as shallow as c's within
+/// the point bound plus twice the move's length: a's depth along a fixed normal changes by at most
+/// the length of a move of b, so a normal of least depth after b moves by +t and by -t is, unmoved,
+/// within 2 |t| of the least depth, and either face may be reported. Such a tie holds where the
+/// depth behind two faces has a corner (a circle's centre on a box's medial axis). Only for faces
+/// whose normals differ (by more than 2.5 degrees): parallel faces tied up to rounding must keep
+/// their order, and an incident face changing under one normal is no tie of depths.
+template <Scalar T>
+bool tied_faces(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, const Contact<T>& moved, double move) {
+  const Vec2<double> n = moved.normal.template cast<double>();
+  if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) return false;
+  if (n.dot(c.normal.template cast<double>()) > 0.999) return false;
+  const double reach = double(c.depth) + 2 * move + point_bound(a, b, double(c.depth));
+  return oracle::separates(a, b, Vec2<double>(-n * reach));
 }
 
 /// b moved by t, or nullopt when the move has no representation in T.
@@ -375,8 +392,13 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     if (id_keys(*c) != id_keys(*cp)) {
-      if (tied_child_pairs(a, b, *c, *cp)) {
+      const double move = t.template cast<double>().norm();
+      if (tied_child_pairs(a, b, *c, *cp, move)) {
         j.v.account += "; child pairs tied for the deepest (either may be reported)";
+        return;
+      }
+      if (tied_faces(a, b, *c, *cp, move)) {
+        j.v.account += "; faces tied for the least depth within the move (either may be reported)";
         return;
       }
       j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself", ids_text(*c));

@@ -9,6 +9,7 @@
 ///   4. clip_to_reference_face: the incident face clipped to the reference face's side planes.
 ///   5. keep_points_within_reach: the clipped ends deep enough, each moved midway between surfaces.
 ///   6. find_witness_point: when clipping found nothing, the candidate nearest to both shapes.
+///   7. name_end_vertex: a single incident point at or beyond an end of the reference face names that end.
 /// Each point carries its feature id (feature.hpp) and its separation: the signed distance between
 /// the two surfaces along the normal at that point (negative when penetrating). A speculative
 /// distance keeps clipped points apart by up to it; speculative_contact_cores() is the contact of
@@ -170,15 +171,21 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
       best = j;
     }
   }
+  // A later face takes over only when it spans more by more than the spans' rounding (faces of a
+  // square at 45 degrees to the reference face span it equally), so that the face, and its ids,
+  // stay put while the pair moves.
   const Vec2c tangent = f.r2 - f.r1;
   const Calc len2 = tangent.squaredNorm();
-  Calc best_span = -std::numeric_limits<Calc>::infinity();
+  Calc best_span = -std::numeric_limits<Calc>::infinity(), span_tie = -1;
   for (std::size_t j = 0; j < inc.size(); ++j) {
     if (anti_parallel(j) > best_dot + kFaceTieTolerance) continue;
     const Vec2c a0 = inc[j], a1 = inc[next_index(j, inc.size())];
     const Calc t0 = (a0 - f.r1).dot(tangent), t1 = (a1 - f.r1).dot(tangent);
     const Calc span = std::min(std::max(t0, t1), len2) - std::max(std::min(t0, t1), Calc(0));
-    if (span > best_span) {
+    if (best_span > -std::numeric_limits<Calc>::infinity() && span_tie < 0) {
+      span_tie = kFaceOrderTie * kUnitRoundoff * (point_scale(*f.ref, inc) * std::sqrt(len2) + len2);
+    }
+    if (span > best_span + std::max(span_tie, Calc(0))) {
       best_span = span;
       best = j;
     }
@@ -253,9 +260,12 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   const Core& inc = *f.inc;
   Calc best = std::numeric_limits<Calc>::infinity();
   Vec2c witness = p[0];
+  // A later candidate takes over only when nearer by more than rounding: the first two lie midway
+  // between the surfaces, and a vertex of one core, on its own surface, must not win a tie.
+  const Calc tie = kOverlapErrorFactor * kUnitRoundoff * std::max({point_scale(p, q), p.radius, q.radius});
   auto consider_witness = [&](const Vec2c& x) {
     const Calc e = std::max(excess_over(x, p), excess_over(x, q));
-    if (e < best) {
+    if (e < best - tie) {
       best = e;
       witness = x;
     }
@@ -273,7 +283,22 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   return witness;
 }
 
-/// Steps 2 to 6 from the axis of least penetration of two cores known to overlap. normals_p and
+/// Step 7, for a single incident point (a circle's centre, a capsule's coincident ends): a point
+/// that projects onto an end of the reference face, or beyond it, names that end's vertex, as
+/// closest_points() names it once the point leaves the core (so a point on a segment's end keeps
+/// its id as it moves off along the normal).
+inline void name_end_vertex(const ReferenceFace& f, CoreContact& out) {
+  if (f.inc->size() != 1 || out.count != 1) return;
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc along = ((*f.inc)[0] - f.r1).dot(tangent);
+  if (along > 0 && along < tangent.squaredNorm()) return;
+  // r1 is the reference core's point f.face and r2 the next (a segment's face 1 runs from its point 1).
+  const unsigned end = along <= 0 ? f.face : unsigned(next_index(f.face, f.ref->size()));
+  const CoreFeature vertex{end, false}, point{0, false};
+  out.ids[0] = f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex);
+}
+
+/// Steps 2 to 7 from the axis of least penetration of two cores known to overlap. normals_p and
 /// normals_q: each core's unit edge normals when known (else nullptr: computed where needed).
 inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& ax, Calc speculative = 0,
                                      const Vec2c* normals_p = nullptr, const Vec2c* normals_q = nullptr) {
@@ -297,6 +322,7 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
     out.ids[0] = face_point_id(f, deepest);
     out.count = 1;
   }
+  name_end_vertex(f, out);
   return out;
 }
 
