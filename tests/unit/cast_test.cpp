@@ -274,6 +274,29 @@ TYPED_TEST(Cast, TimeOfImpactOfBodiesThatDoNotTurnReachesACornerDiscInOneStep) {
   }
 }
 
+TYPED_TEST(Cast, TimeOfImpactOfABodyHeldTurnedStepsByItsTurnedFaces) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // A box held at 0.6 rad (a1 == a0) moves along its own turned axis u into a still ball on that
+  // axis: its face +u meets the ball head-on. That face, turned to the pose, bounds the first step
+  // to the contact exactly, so the hit takes no second step and its normal is u.
+  const Aabb<T> box(V(-1, T(-0.5)), V(1, T(0.5)));
+  const Circle<T> ball(V(0, 0), T(0.25));
+  const T angle = T(0.6);
+  const Vec2<double> u(std::cos(double(angle)), std::sin(double(angle)));
+  const Sweep<T> sa{V(0, 0), V(0, 0), V(T(4 * u.x()), T(4 * u.y())), angle, angle};
+  const Sweep<T> sb{V(0, 0), V(T(3 * u.x()), T(3 * u.y())), V(T(3 * u.x()), T(3 * u.y())), T(0), T(0)};
+  for (const bool swapped : {false, true}) {
+    const CastResult<T> r = swapped ? time_of_impact(ball, sb, box, sa, T(1)) : time_of_impact(box, sa, ball, sb, T(1));
+    ASSERT_EQ(r.outcome, CastOutcome::Hit);
+    EXPECT_EQ(r.iterations, 0);
+    EXPECT_NEAR(double(r.t), 1.75 / 4, 1e-5);
+    const Vec2<double> n = widen(r.normal) * (swapped ? -1.0 : 1.0);
+    EXPECT_NEAR(n.x(), u.x(), 1e-5);
+    EXPECT_NEAR(n.y(), u.y(), 1e-5);
+  }
+}
+
 }  // namespace
 }  // namespace collide::test
 

@@ -142,8 +142,10 @@ inline Calc disc_entry_time(const Vec2c& d, const Vec2c& w, Calc aim) noexcept {
 
 /// Conservative advancement of core p moving by w per unit time against the fixed core q, from
 /// s = 0 up to s_max; both dilated by skin in all (the images' distance from the exact shapes),
-/// so that the exact shapes stay apart too.
-inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Calc s_max, Calc target, Calc skin) {
+/// so that the exact shapes stay apart too. fp, fq: the cores' face normals as they stand
+/// (part_of(), kept_faces()).
+inline CoreCast advance_linear(const Core& p, const KeptFaces& fp, const Core& q, const KeptFaces& fq, const Vec2c& w,
+                               Calc s_max, Calc target, Calc skin) {
   const Calc r = p.radius + q.radius + skin;
   // n . w is off by a few roundings of |w| (n is a rounded unit vector).
   const Calc closing_error = 4 * kUnitRoundoff * (std::fabs(w.x()) + std::fabs(w.y()));
@@ -154,8 +156,7 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
     const Calc closing = std::max(n.dot(w), Calc(0)) + closing_error;
     return separation > target ? (separation - target) / closing : Calc(0);
   };
-  // Face normals do not turn under translation: computed once, from p toward q.
-  const KeptFaces fp = kept_faces(p), fq = kept_faces(q);
+  // Face normals do not turn under translation: fp and fq hold them for the whole advancement.
   const auto each_face = [&](auto&& f) {
     for_each_kept_face(fp, p, [&](const Vec2c& n, unsigned i) { f(FaceAxis{0, i, n}); });
     for_each_kept_face(fq, q, [&](const Vec2c& n, unsigned i) { f(FaceAxis{1, i, Vec2c(-n)}); });
@@ -216,11 +217,11 @@ inline CoreCast advance_linear(const Core& p, const Core& q, const Vec2c& w, Cal
 /// One pair of primitives known apart at s = 0, advanced in the fixed order of core_before()
 /// (the one moving at the relative velocity, the other still), with the point taken back to the
 /// world frame of time s by the velocity of the one held still.
-inline CoreCast cast_cores(const Core& p, const Vec2c& vp, const Core& q, const Vec2c& vq, Calc s_max, Calc target,
+inline CoreCast cast_cores(const Part& p, const Vec2c& vp, const Part& q, const Vec2c& vq, Calc s_max, Calc target,
                            Calc skin) {
-  const bool swap = core_before(q, p);
-  CoreCast c = swap ? reversed(advance_linear(q, p, vq - vp, s_max, target, skin))
-                    : advance_linear(p, q, vp - vq, s_max, target, skin);
+  const bool swap = core_before(q.core, p.core);
+  CoreCast c = swap ? reversed(advance_linear(q.core, q.faces, p.core, p.faces, vq - vp, s_max, target, skin))
+                    : advance_linear(p.core, p.faces, q.core, q.faces, vp - vq, s_max, target, skin);
   if (c.outcome == CastOutcome::Hit) c.point += (swap ? vp : vq) * c.s;
   return c;
 }
@@ -308,7 +309,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
   const Calc s_max = static_cast<Calc>(max_t);
   const Calc target = detail::advance_target(detail::cast_scale(a, xa, b, xb, w, s_max));
   const Calc skin = overlap_tolerance(a, xa, b, xb);
-  const auto step = [&](const detail::Core& p, const detail::Core& q, Calc until) {
+  const auto step = [&](const detail::Part& p, const detail::Part& q, Calc until) {
     return detail::cast_cores(p, wa, q, wb, until, target, skin);
   };
   const detail::CoreCast best = xa.is_identity() && xb.is_identity()

@@ -168,6 +168,15 @@ inline Vec2c turned(const Vec2c& rotation, const Vec2c& n) noexcept {
   return Vec2c(rotation.x() * n.x() - rotation.y() * n.y(), rotation.y() * n.x() + rotation.x() * n.y());
 }
 
+/// The kept faces turned by the rotation (cos, sin); faces not all kept stay so (computed from the
+/// posed core when asked).
+inline KeptFaces turned_faces(const Vec2c& rotation, KeptFaces k) noexcept {
+  if (k.complete) {
+    for (std::size_t i = 0; i < k.count; ++i) k.normal[i] = turned(rotation, k.normal[i]);
+  }
+  return k;
+}
+
 /// Upper bound on how far any point of the local core lies from the centre of rotation.
 inline Calc reach_of(const Core& c, const Vec2c& center) noexcept {
   Calc r = 0;
@@ -336,15 +345,18 @@ inline Calc turning_face_step(const Core& f, const BodyMotion& mf, const Core& o
 /// (M bounds every position; target / 4 is 64 of them), and of the velocities themselves over s <= 1.
 /// The cores are dilated by it, so the posed shapes and the continuous motion stay apart wherever
 /// the cast proves them apart; a hit's gap grows by at most 2 jitter, within the contract's eps.
+/// fpl, fql: the local cores' face normals, turned here by the poses at s = 0.
 template <Scalar T>
-CoreCast advance_translating(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max,
-                             Calc target, Calc skin) {
+CoreCast advance_translating(const Core& pl, const KeptFaces& fpl, const Sweep<T>& sp, const Core& ql,
+                             const KeptFaces& fql, const Sweep<T>& sq, Calc s_max, Calc target, Calc skin) {
+  const SweepPose xp = sweep_pose(sp, 0), xq = sweep_pose(sq, 0);
   Core p, q;
-  pose_core(pl, sweep_pose(sp, 0), p);
-  pose_core(ql, sweep_pose(sq, 0), q);
+  pose_core(pl, xp, p);
+  pose_core(ql, xq, q);
   const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
   const Calc jitter = target / 4 + 4 * kUnitRoundoff * (vp.cwiseAbs().sum() + vq.cwiseAbs().sum());
-  CoreCast c = advance_linear(p, q, vp - vq, s_max, target, skin + jitter);
+  CoreCast c = advance_linear(p, turned_faces(xp.rotation, fpl), q, turned_faces(xq.rotation, fql), vp - vq, s_max,
+                              target, skin + jitter);
   if (c.outcome == CastOutcome::Hit) c.point += vq * c.s;
   return c;
 }
@@ -354,12 +366,12 @@ CoreCast advance_translating(const Core& pl, const Sweep<T>& sp, const Core& ql,
 /// n . (centre velocity of p - that of q) plus each body's turn rate times its reach, and along a face turning
 /// with its body no faster than turning_face_step() allows, so every face normal of both posed cores and the
 /// closest points' direction bound a safe step, and the largest is taken; when rounding leaves no axis separating by
-/// more than target, the gap itself falls no faster than the bound on all motion. A pair neither of which turns is
-/// advance_translating()'s.
+/// more than target, the gap itself falls no faster than the bound on all motion. fp, fq: the local cores' face
+/// normals (part_of()). A pair neither of which turns is advance_translating()'s.
 template <Scalar T>
-CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const Sweep<T>& sq, Calc s_max, Calc target,
-                       Calc skin) {
-  if (sp.a1 == sp.a0 && sq.a1 == sq.a0) return advance_translating(pl, sp, ql, sq, s_max, target, skin);
+CoreCast advance_swept(const Core& pl, const KeptFaces& fp, const Sweep<T>& sp, const Core& ql, const KeptFaces& fq,
+                       const Sweep<T>& sq, Calc s_max, Calc target, Calc skin) {
+  if (sp.a1 == sp.a0 && sq.a1 == sq.a0) return advance_translating(pl, fp, sp, ql, fq, sq, s_max, target, skin);
   const Calc r = pl.radius + ql.radius + skin;
   const Calc reach_p = sweep_reach(sp, pl), reach_q = sweep_reach(sq, ql);
   const Calc speed = sweep_speed(sp, reach_p) + sweep_speed(sq, reach_q);
@@ -370,7 +382,6 @@ CoreCast advance_swept(const Core& pl, const Sweep<T>& sp, const Core& ql, const
   const Calc closing_error =
       8 * kUnitRoundoff *
       ((widen(sp.c1) - widen(sp.c0)).cwiseAbs().sum() + (widen(sq.c1) - widen(sq.c0)).cwiseAbs().sum());
-  const KeptFaces fp = kept_faces(pl), fq = kept_faces(ql);
   // A Taylor bound on each point's motion: its rate now and turn rate^2 times its arm after.
   const Vec2c vp = widen(sp.c1) - widen(sp.c0), vq = widen(sq.c1) - widen(sq.c0);
   const Calc wp = static_cast<Calc>(sp.a1) - static_cast<Calc>(sp.a0);
@@ -531,10 +542,11 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
   const Calc target = detail::advance_target(detail::toi_scale(a, sweep_a, b, sweep_b));
   const Calc skin = placement_tolerance(a) + placement_tolerance(b);
   const detail::CoreCast best =
-      detail::earliest_over_pairs(a, b, s_max, [&](const detail::Core& p, const detail::Core& q, Calc until) {
-        return detail::core_before(q, p)
-                   ? detail::reversed(detail::advance_swept(q, sweep_b, p, sweep_a, until, target, skin))
-                   : detail::advance_swept(p, sweep_a, q, sweep_b, until, target, skin);
+      detail::earliest_over_pairs(a, b, s_max, [&](const detail::Part& p, const detail::Part& q, Calc until) {
+        return detail::core_before(q.core, p.core)
+                   ? detail::reversed(
+                         detail::advance_swept(q.core, q.faces, sweep_b, p.core, p.faces, sweep_a, until, target, skin))
+                   : detail::advance_swept(p.core, p.faces, sweep_a, q.core, q.faces, sweep_b, until, target, skin);
       });
   return detail::to_result<T>(best, s_max);
 }

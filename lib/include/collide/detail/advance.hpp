@@ -6,6 +6,7 @@
 
 #include "collide/config.hpp"
 #include "collide/detail/contact_cores.hpp"
+#include "collide/detail/contact_pairs.hpp"
 #include "collide/detail/core.hpp"
 #include "collide/shape_traits.hpp"
 
@@ -78,6 +79,36 @@ inline KeptFaces kept_faces(const Core& c) {
     }
   });
   return k;
+}
+
+/// A primitive's core and its faces' unit normals, kept for the whole query. A box's normals come
+/// from its stored axis and a polygon's are the ones it cached (hull_of()): one square root for a
+/// box where its corners would take four. Any unit normal bounds a step, and where the corners'
+/// rounding tilts a face off its axis, face_witness() measures the gap from the face itself.
+struct Part {
+  Core core;
+  KeptFaces faces;
+};
+
+template <class S>
+Part part_of(const S& s) {
+  Part out;
+  if constexpr (requires(Hull & h) { hull_of(s, h); }) {
+    Hull h;
+    if (hull_of(s, h) && h.normals() && h.core.size() <= out.faces.normal.size()) {
+      const Vec2c* normals = h.normals();
+      out.core = std::move(h.core);
+      out.faces.count = out.core.size();
+      for (std::size_t i = 0; i < out.faces.count; ++i) {
+        out.faces.normal[i] = normals[i];
+        out.faces.index[i] = static_cast<unsigned>(i);
+      }
+      return out;
+    }
+  }
+  out.core = core_of(s);
+  out.faces = kept_faces(out.core);
+  return out;
 }
 
 /// Calls f(n, i) with each face normal of c and its index: the kept ones, or recomputed when they were not all
@@ -164,11 +195,11 @@ inline bool pair_before(const Core& p, const Core& q, const Core& p2, const Core
   return core_before(hi, hi2);
 }
 
-/// Calls f(pa, pb) for every pair of primitives of a and b (a compound's children), with the
-/// earliest answer so far, and keeps the earliest: of hits and limits the earlier wins (a limit
-/// earlier than every hit makes the whole answer a limit there); two misses stay a miss. Pairs
-/// answering at the same time are ranked by pair_before(), so that the shapes asked in the
-/// other order keep the same pair (and so the reversed normal).
+/// Calls f(p, q, until) with the parts (part_of()) of every pair of primitives of a and b (a
+/// compound's children), until the earliest answer so far, and keeps the earliest: of hits and limits the earlier wins
+/// (a limit earlier than every hit makes the whole answer a limit there); two misses stay a miss. Pairs answering at
+/// the same time are ranked by pair_before(), so that the shapes asked in the other order keep the same pair (and so
+/// the reversed normal).
 template <class A, class B, class F>
 CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
   CoreCast best{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), 0};
@@ -182,14 +213,14 @@ CoreCast earliest_over_pairs(const A& a, const B& b, Calc s_max, F&& f) {
           // A later pair only has to be followed up to the earliest answer so far, that time included:
           // an advancement stops with a miss only past its bound, so a pair tied with the best is ranked.
           const Calc until = best.outcome == CastOutcome::Miss ? s_max : best.s;
-          const Core p = core_of(pa), q = core_of(pb);
+          const Part p = part_of(pa), q = part_of(pb);
           const CoreCast c = f(p, q, until);
           const int iterations = std::max(best.iterations, c.iterations);
           const bool open = best.outcome != CastOutcome::Miss;
           if (c.outcome != CastOutcome::Miss &&
-              (!open || c.s < best.s || (c.s == best.s && pair_before(p, q, best_p, best_q)))) {
+              (!open || c.s < best.s || (c.s == best.s && pair_before(p.core, q.core, best_p, best_q)))) {
             best = c;
-            if constexpr (ranked) best_p = p, best_q = q;
+            if constexpr (ranked) best_p = p.core, best_q = q.core;
           }
           best.iterations = iterations;
         });
