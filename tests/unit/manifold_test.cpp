@@ -232,6 +232,47 @@ TEST(ManifoldRegression, SquareAt45DegreesToTheReferenceFaceKeepsItsIncidentFace
   }
 }
 
+/// A capsule whose segment ends on the end of a flat box (a segment) and leaves it beside the
+/// box's face, outside its side plane: rounding puts that end just outside too, clipping finds
+/// nothing, and the point comes from the witness candidates. It must be the end moved midway
+/// between the surfaces, not the end itself (inside both shapes, but a radius from the capsule's
+/// surface along the normal).
+TEST(ManifoldRegression, CapsuleEndingOnTheEndOfAFlatBoxGetsAMidwayPoint) {
+  using V = Vec2<double>;
+  const Obb<double> flat =
+      *Obb<double>::make_with_axis(V(16, -3), V(0, 1), V(-0.38461538461538464, -0.92307692307692313));
+  const V end(15.076923076923077, -2.615384615384615);  // c - v, to rounding
+  const Capsule<double> capsule = *Capsule<double>::make(V(7.0769230769230766, -2.615384615384615), end, 1);
+  for (const bool swapped : {false, true}) {
+    const auto c = swapped ? contact(capsule, flat) : contact(flat, capsule);
+    ASSERT_TRUE(c.has_value());
+    ASSERT_EQ(c->count, 1);
+    const V n = swapped ? V(-c->normal) : c->normal;  // from the box toward the capsule: -u
+    EXPECT_NEAR(n.x(), -0.38461538461538464, 1e-12);
+    EXPECT_NEAR(n.y(), -0.92307692307692313, 1e-12);
+    EXPECT_NEAR(c->separations[0], -1.0, 1e-12);
+    EXPECT_NEAR((c->points[0] - (end - n * 0.5)).norm(), 0.0, 1e-12) << "point " << c->points[0].transpose();
+  }
+}
+
+/// A short segment lying on a long one, both at 2 x 10^7 along (3, 4): both clipped ends are at
+/// separation 0, up to rounding, and both must stay points at the segment and moved along the line
+/// either way (one end rounded out of reach dropped its point, a different one at each position).
+TEST(ManifoldRegression, SegmentLyingOnALongSegmentKeepsBothEnds) {
+  using V = Vec2<double>;
+  const Capsule<double> a = *Capsule<double>::make(V(-15777472, -17777216), V(-22068928, -26165824), 0);
+  const auto b = [](const V& at) { return *Capsule<double>::make(at, at + V(-98304, -131072), 0); };
+  const V at(-18874048, -21905984);
+  for (const double k : {-1.0, 0.0, 1.0}) {
+    const auto c = contact(a, b(at + V(24, 32) * k));
+    ASSERT_TRUE(c.has_value());
+    ASSERT_EQ(c->count, 2) << "moved by " << k << " x (24, 32)";
+    EXPECT_EQ(c->ids[0].index_b, 0);
+    EXPECT_EQ(c->ids[1].index_b, 1);
+    for (int i = 0; i < 2; ++i) EXPECT_LE(std::fabs(c->separations[std::size_t(i)]), 1e-8);
+  }
+}
+
 /// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
 /// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
 /// between child pairs is measured at their deepest points, which the added point is not).

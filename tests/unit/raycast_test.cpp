@@ -127,6 +127,17 @@ TYPED_TEST(Raycast, Capsule) {
   EXPECT_FALSE(raycast(seg, ray<T>(-2, 2, 1, 0), T(10)).has_value());
 }
 
+/// A ray reaching a capsule exactly where its round end meets its flat side: the rectangle
+/// between the end disks is entered through its end and its side at once, and rounding made the
+/// end (inside the capsule) the entering face. The normal must be the surface's, (0, 1).
+TYPED_TEST(Raycast, CapsuleHitWhereTheEndMeetsTheSideHasTheSurfaceNormal) {
+  using T = TypeParam;
+  const T m = T(1048576);  // 2^20
+  const Capsule<T> cap(Vec2<T>(-5 * m, -9 * m), Vec2<T>(-11 * m, -9 * m), m);
+  // (1, -6) + t (-9, -3) reaches the top of the end disk, (-5, -8), at t = 2/3 (in units of m).
+  expect_hit(cap, ray<T>(m, -6 * m, -9 * m, -3 * m), T(1), 2.0 / 3.0, -5.0 * m, -8.0 * m, 0, 1);
+}
+
 TYPED_TEST(Raycast, CompoundNearestChild) {
   using T = TypeParam;
   std::vector<Primitive<T>> kids;

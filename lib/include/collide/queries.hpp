@@ -241,10 +241,6 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
   }
 }
 
-}  // namespace detail
-
-namespace detail {
-
 /// contact() with its result in T, for shapes stored or placed; speculative as contact() takes it.
 template <Scalar T, class A, class B>
 std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0)) {
@@ -366,10 +362,6 @@ std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, co
   }
 }
 
-}  // namespace detail
-
-namespace detail {
-
 /// The margin formula with its magnitudes given: s_pair the computation's scale (the largest
 /// coordinate the depth was computed from), s_moved the largest coordinate of the moved shape's
 /// stored values (what is rounded to T when it moves).
@@ -379,10 +371,6 @@ Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
          8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) + 16 * kSmallestDouble +
          2 * Calc(std::numeric_limits<T>::denorm_min());
 }
-
-}  // namespace detail
-
-namespace detail {
 
 /// The largest stored magnitude that moving s rounds to T: its box's coordinates and, for a
 /// compound, the position of each child placed by a transform (a move shifts that position).

@@ -62,6 +62,7 @@ struct UnitRay {
 struct UnitRayHit {
   Calc s;
   Vec2c normal;
+  int face = -1;  ///< the half-plane entered (ray_half_planes), -1 otherwise
 };
 
 inline bool closer(const std::optional<UnitRayHit>& h, const std::optional<UnitRayHit>& best) {
@@ -117,6 +118,7 @@ template <class Plane>
 std::optional<UnitRayHit> ray_half_planes(std::size_t count, Plane&& plane, const UnitRay& ray) {
   Calc enter = -std::numeric_limits<Calc>::infinity(), exit = std::numeric_limits<Calc>::infinity();
   Vec2c enter_n = -ray.u;
+  int enter_face = -1;
   for (std::size_t i = 0; i < count; ++i) {
     Vec2c n, p;
     plane(i, n, p);
@@ -131,13 +133,14 @@ std::optional<UnitRayHit> ray_half_planes(std::size_t count, Plane&& plane, cons
       if (s > enter) {
         enter = s;
         enter_n = n;
+        enter_face = int(i);
       }
     } else {
       exit = std::min(exit, s);
     }
   }
   if (!(enter <= exit) || exit < 0 || enter > ray.s_max) return std::nullopt;
-  return UnitRayHit{std::max(Calc(0), enter), enter_n != Vec2c::Zero() ? unit_of(enter_n) : Vec2c(-ray.u)};
+  return UnitRayHit{std::max(Calc(0), enter), enter_n != Vec2c::Zero() ? unit_of(enter_n) : Vec2c(-ray.u), enter_face};
 }
 
 /// Ray against a closed segment [a, b] (zero thickness).
@@ -192,7 +195,13 @@ inline std::optional<UnitRayHit> ray_core(const Core& c, const UnitRay& ray) {
             break;
         }
       };
-      const std::optional<UnitRayHit> hr = ray_half_planes(4, plane, ray);
+      std::optional<UnitRayHit> hr = ray_half_planes(4, plane, ray);
+      // Entered through an end of the rectangle (its tie with that end's disk lost to rounding):
+      // the point lies on the disk, and the disk's normal is the surface's (an end is inside).
+      if (hr && hr->face >= 2 && hr->s > 0) {
+        const Vec2c m = ray.o + ray.u * hr->s - (hr->face == 2 ? c[1] : c[0]);
+        if (m != Vec2c::Zero()) hr->normal = unit_of(m);
+      }
       if (hr && (!best || hr->s < best->s)) best = hr;
     }
     return best;

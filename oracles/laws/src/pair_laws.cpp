@@ -523,12 +523,16 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
     for (const auto& x : ka) pa.push_back(oracle::placed(x.shape, x.transform));
     for (const auto& y : kb) pb.push_back(oracle::placed(y.shape, y.transform));
     // Direction: a moved by -normal * (depth + 2 bounds) no longer overlaps b. For compounds the
-    // contact is the deepest child pair's, so some overlapping child pair must be separated.
+    // contact is the deepest child pair's, so some overlapping child pair must be separated. Where
+    // children are placed by transforms, a pair may overlap as computed while apart within the
+    // placement's band (overlap_tolerance): such a pair may be the one reported.
     const Vec2c push = -n * (depth + 2 * bound);
+    const double placed_band = overlap_tolerance(a, b);
     bool separated = false, any_pair = false;
     for (const oracle::Placed& x : pa) {
       for (const oracle::Placed& y : pb) {
-        if (separated || !oracle::overlaps(x, y)) continue;
+        if (separated) continue;
+        if (!oracle::overlaps(x, y) && !(placed_band > 0 && oracle::within_band(x, y, placed_band))) continue;
         any_pair = true;
         separated = oracle::separates(x, y, push);
       }

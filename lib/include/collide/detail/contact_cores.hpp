@@ -128,6 +128,12 @@ inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axi
   return f;
 }
 
+/// The rounding of (x - r1) . tangent for the points x of two cores, tangent = r2 - r1 of squared
+/// length len2 (kFaceOrderTie units of roundoff): within it, two such values are equal.
+inline Calc along_tie(const ReferenceFace& f, Calc len2) noexcept {
+  return kFaceOrderTie * kUnitRoundoff * (point_scale(*f.ref, *f.inc) * std::sqrt(len2) + len2);
+}
+
 /// The incident face (one or two points) as it is clipped.
 struct IncidentFace {
   std::array<Vec2c, 2> ends{};
@@ -176,19 +182,20 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
   // stay put while the pair moves.
   const Vec2c tangent = f.r2 - f.r1;
   const Calc len2 = tangent.squaredNorm();
-  Calc best_span = -std::numeric_limits<Calc>::infinity(), span_tie = -1;
+  Calc best_span = 0, span_tie = -1;
+  bool found = false;
   for (std::size_t j = 0; j < inc.size(); ++j) {
     if (anti_parallel(j) > best_dot + kFaceTieTolerance) continue;
     const Vec2c a0 = inc[j], a1 = inc[next_index(j, inc.size())];
     const Calc t0 = (a0 - f.r1).dot(tangent), t1 = (a1 - f.r1).dot(tangent);
     const Calc span = std::min(std::max(t0, t1), len2) - std::max(std::min(t0, t1), Calc(0));
-    if (best_span > -std::numeric_limits<Calc>::infinity() && span_tie < 0) {
-      span_tie = kFaceOrderTie * kUnitRoundoff * (point_scale(*f.ref, inc) * std::sqrt(len2) + len2);
+    if (found) {
+      if (span_tie < 0) span_tie = along_tie(f, len2);
+      if (!(span > best_span + span_tie)) continue;
     }
-    if (span > best_span + std::max(span_tie, Calc(0))) {
-      best_span = span;
-      best = j;
-    }
+    found = true;
+    best_span = span;
+    best = j;
   }
   const std::size_t after = next_index(best, inc.size());
   out.ends = {inc[best], inc[after]};
@@ -226,14 +233,20 @@ inline FeatureId face_point_id(const ReferenceFace& f, unsigned v) noexcept {
 }
 
 /// Step 5: the clipped ends within reach of the radii plus the speculative distance, each moved
-/// midway between the surfaces, with its separation (s - the radii).
+/// midway between the surfaces, with its separation (s - the radii). An end beyond reach by no
+/// more than the rounding of s is kept: an end exactly at reach (a segment lying on a face) must
+/// not come and go with the rounding as the pair moves.
 inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out,
                                      Calc speculative = 0) {
   const Calc ref_radius = f.ref->radius, inc_radius = f.inc->radius;
   const Calc reach = ref_radius + inc_radius + speculative;
+  Calc band = -1;  // computed only for an end beyond reach
   for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
     const Calc s = (face.ends[i] - f.r1).dot(f.normal);
-    if (s > reach) continue;
+    if (s > reach) {
+      if (band < 0) band = kOverlapErrorFactor * kUnitRoundoff * std::max(point_scale(*f.ref, *f.inc), reach);
+      if (s > reach + band) continue;
+    }
     const std::size_t k = std::size_t(out.count++);
     out.points[k] = face.ends[i] + f.normal * ((ref_radius - s - inc_radius) * 0.5);
     out.separations[k] = s - ref_radius - inc_radius;
@@ -252,20 +265,20 @@ inline Calc excess_over(const Vec2c& x, const Core& c) {
 }
 
 /// Step 6: when clipping found nothing (the incident face misses a short reference face) or was
-/// not trusted, the candidate nearest to both dilated cores: the incident core's deepest vertex
-/// moved halfway to the reference surface, the reference face's midpoint moved halfway to the
-/// incident surface, or a vertex of either core (often inside the other, when the shapes differ
-/// in size by orders of magnitude).
+/// not trusted, the candidate whose surface points lie nearest to the dilated cores: the incident
+/// core's deepest vertex moved halfway to the reference surface, the reference face's midpoint
+/// moved halfway to the incident surface, or a vertex of either core (often inside the other,
+/// when the shapes differ in size by orders of magnitude). The surface points are where the
+/// contact puts them, the candidate moved half the depth along the normal either way: a point
+/// inside both shapes but far from one surface (on a segment, say) is not midway.
 inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFace& f, Calc depth, unsigned& deepest) {
   const Core& inc = *f.inc;
   Calc best = std::numeric_limits<Calc>::infinity();
   Vec2c witness = p[0];
-  // A later candidate takes over only when nearer by more than rounding: the first two lie midway
-  // between the surfaces, and a vertex of one core, on its own surface, must not win a tie.
-  const Calc tie = kOverlapErrorFactor * kUnitRoundoff * std::max({point_scale(p, q), p.radius, q.radius});
+  const Vec2c half = (f.owner == 0 ? f.normal : Vec2c(-f.normal)) * (depth * 0.5);  // from p toward q
   auto consider_witness = [&](const Vec2c& x) {
-    const Calc e = std::max(excess_over(x, p), excess_over(x, q));
-    if (e < best - tie) {
+    const Calc e = std::max(excess_over(x + half, p), excess_over(x - half, q));
+    if (e < best) {
       best = e;
       witness = x;
     }
