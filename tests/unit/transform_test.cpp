@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace collide::test {
@@ -112,6 +113,89 @@ TYPED_TEST(Transforms, RotatedShapesMatchTheirBuiltImages) {
   const auto hit = raycast(box, x, Ray<T>{V(-5, 1), V(1, 0)}, T(100));
   ASSERT_TRUE(hit);
   EXPECT_GT(hit->t, T(5));
+}
+
+// Polygons the turn-margin tests use: a square, a thin triangle whose middle vertex projects far
+// beyond its neighbours' segment (t = 3: there moving the neighbours shifts their line most), a
+// needle, and random hulls of 3 to 8 points.
+template <Scalar T>
+std::vector<ConvexPolygon<T>> turn_margin_polygons() {
+  using V = Vec2<T>;
+  std::vector<ConvexPolygon<T>> out;
+  out.push_back(ConvexPolygon<T>{V(-1, -1), V(1, -1), V(1, 1), V(-1, 1)});
+  out.push_back(ConvexPolygon<T>{V(0, 0), V(3, T(-0.125)), V(1, 0)});
+  out.push_back(ConvexPolygon<T>{V(0, 0), V(64, 0), V(32, T(0x1p-12))});
+  std::mt19937 rng(20261202);
+  std::uniform_real_distribution<T> coord(-4, 4);
+  while (out.size() < 60) {
+    std::vector<V> pts(3 + rng() % 6);
+    for (V& p : pts) p = V(coord(rng), coord(rng));
+    if (auto poly = ConvexPolygon<T>::make_hull(pts); poly && poly->size() <= ConvexPolygon<T>::kInline)
+      out.push_back(*poly);
+  }
+  return out;
+}
+
+// turn_margin(): each vertex moved by (just under) the margin, the two ends of a turn the way
+// that shifts their line most toward the middle vertex and the middle vertex toward that line,
+// still turns strictly left. A margin of the least height, ignoring how far the line shifts at
+// the middle vertex's projection, fails on the thin triangle.
+TYPED_TEST(Transforms, TurnMarginKeepsEveryTurnLeftUnderTheWorstMoves) {
+  using T = TypeParam;
+  for (const ConvexPolygon<T>& poly : turn_margin_polygons<T>()) {
+    const Calc m = detail::PolygonAccess::turn_margin(poly);
+    ASSERT_GT(m, 0);
+    const std::size_t n = poly.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2c a = widen(poly[k]), b = widen(poly[(k + 1) % n]), c = widen(poly[(k + 2) % n]);
+      const Vec2c ac = c - a, left = Vec2c(-ac.y(), ac.x()) / ac.norm();  // toward the side away from b
+      const Calc t = (b - a).dot(ac) / ac.squaredNorm(), e = 0.999 * m;
+      const Vec2c a2 = a - left * (t < 1 ? e : -e), c2 = c - left * (t > 0 ? e : -e), b2 = b + left * e;
+      EXPECT_GT(orient(a2, b2, c2), 0) << "turn " << k << " of a polygon of " << n << " vertices, margin " << m;
+    }
+  }
+}
+
+// A polygon's image skips testing its turns only when the margin proves them left: the image
+// keeps every mapped vertex exactly when all the mapped turns are left, and is the rounded hull
+// otherwise. Poses far from the origin flatten the needle; near it the margin decides.
+TYPED_TEST(Transforms, PolygonImageTestsItsTurnsWhenRoundingMayFlattenThem) {
+  using T = TypeParam;
+  std::mt19937 rng(1202);
+  std::uniform_real_distribution<T> angle(-3, 3);
+  int proven = 0, flattened = 0;
+  for (const ConvexPolygon<T>& poly : turn_margin_polygons<T>()) {
+    for (int shift : {0, 20, 40, 60, 90}) {
+      const T far = std::ldexp(T(1), shift);
+      const Transform<T> x = Transform<T>::make(Vec2<T>(far, -far / 3), angle(rng)).value();
+      const detail::Pose pose = x.pose();
+      const std::size_t n = poly.size();
+      std::vector<Vec2c> mapped;
+      for (std::size_t k = 0; k < n; ++k) mapped.push_back(detail::image_point(pose, widen(poly[k])));
+      bool left = true;
+      for (std::size_t k = 0; k < n; ++k)
+        left = left && orient(mapped[k], mapped[(k + 1) % n], mapped[(k + 2) % n]) > 0;
+      Calc local = 0;
+      for (const Vec2<T>& v : poly.vertices()) local = std::max(local, widen(v).cwiseAbs().maxCoeff());
+      proven += detail::PolygonAccess::turn_margin(poly) > detail::image_tolerance(pose, local);
+      flattened += !left;
+      detail::with_image(poly, pose, [&](const auto& img) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(img)>, ConvexPolygon<Calc>>) {
+          if (left) {
+            ASSERT_EQ(img.size(), n);
+            for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(img[k], mapped[k]);
+          } else {
+            EXPECT_TRUE(ConvexPolygon<Calc>::make_hull(mapped).has_value());
+            EXPECT_EQ(img.vertices().size(), ConvexPolygon<Calc>::make_hull(mapped)->size());
+          }
+        } else {
+          EXPECT_FALSE(left) << "a polygon whose mapped turns are all left became a segment";
+        }
+      });
+    }
+  }
+  EXPECT_GT(proven, 100) << "the margin should spare most images their turn tests";
+  EXPECT_GT(flattened, 0) << "some pose should flatten the needle, or this test checks nothing";
 }
 
 TYPED_TEST(Transforms, CompoundChildrenCarryTheirTransforms) {

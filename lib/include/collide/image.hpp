@@ -90,6 +90,13 @@ ConvexPolygon<Calc> widened_shape(const ConvexPolygon<T>& s) {
   return out;
 }
 
+/// The error bound of an image, per point (Hausdorff distance from the exact image):
+/// 16 * 2^-53 * (|p|_inf + 2 L) + 2^-1070, where L is the local magnitude (see
+/// transform_tolerance() in compound.hpp for the derivation).
+inline Calc image_tolerance(const Pose& x, Calc local) noexcept {
+  return 16 * kUnitRoundoff * (x.p.cwiseAbs().maxCoeff() + 2 * local) + 16 * kSmallestDouble;
+}
+
 /// Calls f with the image of s under x (x not the identity). The image's type is that of s,
 /// except: an AABB turned by a rotation with both components non-zero is an OBB (its centre and
 /// half extents computed in double), and a polygon whose rounded image no longer turns strictly
@@ -136,10 +143,20 @@ decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const std::size_t n = s.size();
-  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
-  bool strict = true;
-  for (std::size_t k = 0; k < n && strict; ++k)
-    strict = orient(img[k], img[next_index(k, n)], img[next_index(next_index(k, n), n)]) > 0;
+  Calc local = 0;
+  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) {
+    const Vec2c v = widen(s[k]);
+    local = std::max(local, v.cwiseAbs().maxCoeff());
+    return image_point(x, v);
+  });
+  // Every mapped vertex lies within image_tolerance() of its exact image, whose turns are all
+  // strictly left: a turn margin beyond that tolerance keeps them left without testing them.
+  bool strict = PolygonAccess::turn_margin(s) > image_tolerance(x, local);
+  if (!strict) {
+    strict = true;
+    for (std::size_t k = 0; k < n && strict; ++k)
+      strict = orient(img[k], img[next_index(k, n)], img[next_index(next_index(k, n), n)]) > 0;
+  }
   if (strict) {
     // The stored shape's normals turned: the exact image's edges turn by q / |q|, and this costs
     // one square root for the polygon instead of one per edge.
@@ -158,13 +175,6 @@ decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const auto less = [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
   const auto [lo, hi] = std::minmax_element(img.vertices().begin(), img.vertices().end(), less);
   return f(ShapeAccess::capsule<Calc>(*lo, *hi, 0.0));
-}
-
-/// The error bound of an image, per point (Hausdorff distance from the exact image):
-/// 16 * 2^-53 * (|p|_inf + 2 L) + 2^-1070, where L is the local magnitude (see
-/// transform_tolerance() in compound.hpp for the derivation).
-inline Calc image_tolerance(const Pose& x, Calc local) noexcept {
-  return 16 * kUnitRoundoff * (x.p.cwiseAbs().maxCoeff() + 2 * local) + 16 * kSmallestDouble;
 }
 
 }  // namespace collide::detail

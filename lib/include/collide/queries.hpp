@@ -99,9 +99,7 @@ bool overlaps_concrete(const A& a, const B& b) {
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>
 bool overlaps(const A& a, const B& b) {
-  return detail::visit_shape(a, [&](const auto& ca) {
-    return detail::visit_shape(b, [&](const auto& cb) { return detail::overlaps_concrete(ca, cb); });
-  });
+  return detail::visit_shapes(a, b, [](const auto& ca, const auto& cb) { return detail::overlaps_concrete(ca, cb); });
 }
 
 /// The error bound of the placement of s in the world (see the contract at the top of this file):
@@ -245,9 +243,8 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
 template <Scalar T, class A, class B>
 std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0)) {
   const Calc spec = speculative > 0 ? Calc(speculative) : Calc(0);
-  const std::optional<CoreContact> c = visit_shape(a, [&](const auto& ca) {
-    return visit_shape(b, [&](const auto& cb) { return contact_concrete(ca, cb, spec); });
-  });
+  const std::optional<CoreContact> c =
+      visit_shapes(a, b, [&](const auto& ca, const auto& cb) { return contact_concrete(ca, cb, spec); });
   std::optional<Contact<T>> out;
   if (c) round_into(*c, out.emplace());
   return out;
@@ -465,12 +462,10 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> resolve(const A& a, const B& b) {
   using T = scalar_of_t<A>;
-  return detail::visit_shape(a, [&](const auto& ca) {
-    return detail::visit_shape(b, [&](const auto& cb) -> Vec2<T> {
-      const Calc extra = 2 * (placement_tolerance(ca) + placement_tolerance(cb));
-      return detail::resolve_as<T>(ca, cb, detail::moved_scale(ca), extra,
-                                   [&](const Vec2<T>& v) { return detail::moved_overlaps(ca, v, cb); });
-    });
+  return detail::visit_shapes(a, b, [&](const auto& ca, const auto& cb) -> Vec2<T> {
+    const Calc extra = 2 * (placement_tolerance(ca) + placement_tolerance(cb));
+    return detail::resolve_as<T>(ca, cb, detail::moved_scale(ca), extra,
+                                 [&](const Vec2<T>& v) { return detail::moved_overlaps(ca, v, cb); });
   });
 }
 
@@ -500,9 +495,7 @@ T distance_as(const A& ca, const B& cb) {
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> scalar_of_t<A> distance(const A& a, const B& b) {
   using T = scalar_of_t<A>;
-  return detail::visit_shape(a, [&](const auto& ca) {
-    return detail::visit_shape(b, [&](const auto& cb) { return detail::distance_as<T>(ca, cb); });
-  });
+  return detail::visit_shapes(a, b, [](const auto& ca, const auto& cb) { return detail::distance_as<T>(ca, cb); });
 }
 
 }  // namespace collide

@@ -85,6 +85,18 @@ decltype(auto) visit_shape(const S& s, F&& f) {
   }
 }
 
+/// Calls f with the concrete shapes held by a and b. Two variants take one dispatch on the pair of
+/// kinds rather than one per shape: in a stream of mixed pairs each dispatch is an indirect jump
+/// that the branch predictor mostly misses.
+template <class A, class B, class F>
+decltype(auto) visit_shapes(const A& a, const B& b, F&& f) {
+  if constexpr (VariantShape<A> && VariantShape<B>) {
+    return std::visit(f, a, b);
+  } else {
+    return visit_shape(a, [&](const auto& ca) { return visit_shape(b, [&](const auto& cb) { return f(ca, cb); }); });
+  }
+}
+
 template <class S>
 struct IsCompound : std::false_type {};
 template <Scalar T>

@@ -88,6 +88,29 @@ inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {
   return normalized(Vec2c(d.y(), -d.x())).value_or(Vec2c::Zero());
 }
 
+/// How far each vertex of a counter-clockwise, strictly convex polygon may move (independently,
+/// in any direction) with every turn still strictly left, or 0 when not computed (a coordinate
+/// beyond [2^-200, 2^200], where the products below could underflow or overflow). Per vertex b
+/// between its neighbours a and c: b's distance h from the line ac over 1 + |t| + |1 - t| (t: b's
+/// projection along ac; moving a and c by e moves the line at b by at most (|t| + |1 - t|) e), and
+/// |c - a| (which keeps the line's turn small), each taken low by norms of ac that bound its length
+/// (no square root). A quarter of the least covers the roundings and the line's turn.
+template <class At>
+Calc turn_margin(std::size_t n, At&& at) noexcept {
+  Calc scale = 0, m = std::numeric_limits<Calc>::infinity();
+  for (std::size_t k = 0; k < n; ++k) scale = std::max(scale, at(k).cwiseAbs().maxCoeff());
+  if (!(scale >= 0x1p-200 && scale <= 0x1p200)) return 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2c a = at(k), b = at(next_index(k, n)), c = at(next_index(next_index(k, n), n));
+    const Vec2c ac = c - a, ab = b - a;
+    const Calc len2 = ac.squaredNorm(), along = ab.dot(ac), cross = ab.x() * ac.y() - ab.y() * ac.x();
+    // h / (1 + |t| + |1 - t|) >= cross / |ac|_1 * len2 / (len2 + |along| + |len2 - along|).
+    const Calc spread = len2 + std::fabs(along) + std::fabs(len2 - along);
+    m = std::min({m, cross * len2 / (ac.cwiseAbs().sum() * spread), ac.cwiseAbs().maxCoeff()});
+  }
+  return m > 0 ? m / 4 : 0;
+}
+
 struct Unchecked {};
 struct ObbAccess;
 struct PolygonAccess;
@@ -480,18 +503,21 @@ class ConvexPolygon {
   friend struct detail::ShapeAccess;
   friend struct detail::PolygonAccess;
   ConvexPolygon() = default;
-  /// Every edge's unit outward normal, for the contact paths (polygons of at most kInline vertices).
+  /// Every edge's unit outward normal, for the contact paths, and the turn margin, for images
+  /// (polygons of at most kInline vertices).
   void cache_normals() noexcept {
     if (size_ > kInline) return;
     for (std::size_t k = 0; k < size_; ++k)
       normals_[k] = detail::edge_normal(widen(inline_[k]), widen(inline_[detail::next_index(k, size_)]));
     normals_cached_ = true;
+    turn_margin_ = detail::turn_margin(size_, [&](std::size_t k) { return widen(inline_[k]); });
   }
   std::array<Vec2<T>, kInline> inline_{};
   std::vector<Vec2<T>> heap_;
   std::size_t size_ = 0;
   std::array<Vec2c, kInline> normals_{};
   bool normals_cached_ = false;
+  Calc turn_margin_ = 0;  ///< detail::turn_margin() of the vertices, or 0 (not computed)
 };
 
 namespace detail {
@@ -503,6 +529,11 @@ struct PolygonAccess {
   template <Scalar T>
   static const Vec2c* normals(const ConvexPolygon<T>& s) noexcept {
     return s.normals_cached_ ? s.normals_.data() : nullptr;
+  }
+  /// The polygon's cached turn_margin(), or 0 when it has none.
+  template <Scalar T>
+  static Calc turn_margin(const ConvexPolygon<T>& s) noexcept {
+    return s.turn_margin_;
   }
 };
 }  // namespace detail

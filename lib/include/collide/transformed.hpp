@@ -99,11 +99,9 @@ Calc image_tolerance_of(const S& s, const Transform<T>& x) {
 /// Calls f(a placed, b placed) for any two shapes (variants visited first).
 template <class A, class B, Scalar T, class F>
 decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
-  return visit_shape(a, [&](const auto& ca) {
-    return visit_shape(b, [&](const auto& cb) {
-      return with_placed(
-          ca, xa, [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
-    });
+  return visit_shapes(a, b, [&](const auto& ca, const auto& cb) {
+    return with_placed(ca, xa,
+                       [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
   });
 }
 
