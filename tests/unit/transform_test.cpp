@@ -185,11 +185,14 @@ TYPED_TEST(Transforms, PolygonImageTestsItsTurnsWhenRoundingMayFlattenThem) {
             ASSERT_EQ(img.size(), n);
             for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(img[k], mapped[k]);
           } else {
-            EXPECT_TRUE(ConvexPolygon<Calc>::make_hull(mapped).has_value());
-            EXPECT_EQ(img.vertices().size(), ConvexPolygon<Calc>::make_hull(mapped)->size());
+            const auto hull = ConvexPolygon<Calc>::make_hull(mapped);
+            ASSERT_TRUE(hull.has_value());
+            ASSERT_EQ(img.size(), hull->size());
+            for (std::size_t k = 0; k < img.size(); ++k) EXPECT_EQ(img[k], (*hull)[k]);
           }
         } else {
           EXPECT_FALSE(left) << "a polygon whose mapped turns are all left became a segment";
+          EXPECT_FALSE(ConvexPolygon<Calc>::make_hull(mapped).has_value()) << "a segment where a hull exists";
         }
       });
     }

@@ -149,8 +149,9 @@ decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
     local = std::max(local, v.cwiseAbs().maxCoeff());
     return image_point(x, v);
   });
-  // Every mapped vertex lies within image_tolerance() of its exact image, whose turns are all
-  // strictly left: a turn margin beyond that tolerance keeps them left without testing them.
+  // Every mapped vertex lies within image_tolerance() of its exact image under x's own values
+  // (composed or not), whose turns are all strictly left: a turn margin beyond that tolerance
+  // keeps the mapped turns left without testing them.
   bool strict = PolygonAccess::turn_margin(s) > image_tolerance(x, local);
   if (!strict) {
     strict = true;
