@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""The planted-fault check: the property suite built against the planted fault aabb-slip
-(scripts/planted_faults.txt: the course notes' slip `b.max.y < a.min.x` in decide.hpp) must FAIL
-on the pairs that involve an AABB.
+"""The planted-fault check: a property suite built against the planted faults
+(scripts/planted_faults.txt) with the faults FAULTS turned on (COLLIDE_PLANTED) must FAIL. With
+the static suite and aabb-slip (the course notes' slip `b.max.y < a.min.x` in decide.hpp), it must
+fail on the pairs that involve an AABB.
 
 Runs each law of the build's law table (collide_describe) on the aabb pairs (and compounds, whose
 bounding-box early-out uses the AABB test) and prints whether it caught the fault. Passes only if
@@ -15,9 +16,10 @@ shapes (cast_test.cpp) built against the cast faults. Every law of that suite (t
 `suite` column, from collide_describe) must catch one; the placed suite runs on pairs without an
 AABB (so that the AABB slip is not what it sees).
 
-usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR [--suite placed|moving]
+usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR --faults NAMES [--suite placed|moving]
 """
 
+import argparse
 import json
 import os
 import pathlib
@@ -43,14 +45,20 @@ SUITE_FILTERS = {
 }
 
 
-def run(exe, law, cases_dir, pattern="{law}.*aabb*:{law}.compound_compound*"):
+def run(exe, law, cases_dir, faults, pattern="{law}.*aabb*:{law}.compound_compound*"):
     env = dict(os.environ)
+    env["COLLIDE_PLANTED"] = faults
     env["RC_PARAMS"] = "max_success=300 max_size=100 noshrink=1 seed=1"
     env["COLLIDE_CASES_DIR"] = cases_dir
     env.pop("COLLIDE_PROPS_REPORT", None)
     proc, report = collide_tools.run_gtest([exe, "--gtest_filter=" + pattern.format(law=law)], env=env,
                                            capture_output=True, text=True, timeout=600)
-    return proc.returncode != 0, collide_tools.gtest_failures(report)
+    failed = collide_tools.gtest_failures(report)
+    # Caught means a test failed: a crash (no report) or an unknown fault name (the switch aborts) is not.
+    if proc.returncode != 0 and not failed:
+        raise SystemExit(f"planted_fault.py: {exe} stopped without a report (exit status {proc.returncode}):\n"
+                         f"{proc.stderr[-2000:]}")
+    return bool(failed), failed
 
 
 def law_table(describe):
@@ -58,14 +66,17 @@ def law_table(describe):
 
 
 def main():
-    suite = sys.argv[5] if len(sys.argv) == 6 and sys.argv[4] == "--suite" else None
-    if len(sys.argv) != (6 if suite else 4) or (suite and suite not in SUITE_FILTERS):
-        print(__doc__)
-        return 2
-    exe, describe, cases_dir = sys.argv[1:4]
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("exe", metavar="SUITE_EXECUTABLE")
+    ap.add_argument("describe", metavar="DESCRIBE_EXECUTABLE")
+    ap.add_argument("cases_dir", metavar="CASES_DIR")
+    ap.add_argument("--faults", required=True, metavar="NAMES", help="the planted faults to turn on, comma-separated")
+    ap.add_argument("--suite", choices=sorted(SUITE_FILTERS))
+    args = ap.parse_args()
+    exe, describe, cases_dir, suite, faults = args.exe, args.describe, args.cases_dir, args.suite, args.faults
     if suite:
         return check_suite(exe, [law["name"] for law in law_table(describe) if law["suite"] == suite], suite,
-                           cases_dir)
+                           cases_dir, faults)
     laws = [law["name"] for law in law_table(describe) if law["suite"] == "static"]
     unknown = [law for law in MUST_CATCH if law not in laws]
     if unknown:
@@ -75,7 +86,7 @@ def main():
     ok = True
     rows = []
     for law in MUST_CATCH + [law for law in laws if law not in MUST_CATCH]:
-        caught, tests = run(exe, law, cases_dir)
+        caught, tests = run(exe, law, cases_dir, faults)
         required = law in MUST_CATCH
         mark = "yes" if caught else ("NO" if required else "no")
         rows.append([law, mark, ", ".join(tests[:6]) + (" ..." if len(tests) > 6 else "")])
@@ -86,11 +97,11 @@ def main():
     return 0 if ok else 1
 
 
-def check_suite(exe, laws, suite, cases_dir):
+def check_suite(exe, laws, suite, cases_dir, faults):
     os.makedirs(cases_dir, exist_ok=True)
     rows, ok = [], True
     for law in laws:
-        caught, tests = run(exe, law, cases_dir, SUITE_FILTERS[suite])
+        caught, tests = run(exe, law, cases_dir, faults, SUITE_FILTERS[suite])
         rows.append([law, "yes" if caught else "NO", ", ".join(tests[:6]) + (" ..." if len(tests) > 6 else "")])
         ok = ok and caught
     collide_tools.print_table(["law", "caught", "failing tests"], rows)

@@ -20,13 +20,14 @@ the replays within --goal seconds; 2 when the list does not apply (a mutant's or
 missing or ambiguous), naming each such mutant.
 
 usage: scripts/mutate.py [--build-dir build/mutation] [--only NAME...] [--jobs 2] [--check]
-       scripts/mutate.py --planted NAME --out DIR    (the build's planted faults, see below)
-       scripts/mutate.py --planted NAME --print-path
+       scripts/mutate.py --planted --out DIR    (the build's planted faults, see below)
+       scripts/mutate.py --planted --print-path
 
-The planted faults of scripts/planted_faults.txt use the same format and checks; --planted writes
-one of them plainly into a copy of its header under DIR (DIR/collide/...), which the build puts
-before lib/include for the planted-fault test targets; --print-path prints that header's path
-relative to DIR. --check checks both lists.
+The planted faults of scripts/planted_faults.txt use the same format and checks, behind their own
+switch: --planted writes the headers they touch, every fault in place, under DIR (DIR/collide/...),
+which the build puts before lib/include for the planted-fault test targets; collide_planted(K)
+reads the names in COLLIDE_PLANTED (comma-separated), so one planted build serves every planted
+test. --print-path prints those headers' paths relative to DIR. --check checks both lists.
 """
 
 from __future__ import annotations
@@ -53,6 +54,9 @@ LAYERS = ("properties", "replays", "unit")
 PROPS_PARAMS = "max_success=200 max_size=100 seed=1 noshrink=1"
 TIMEOUT = 120  # seconds per layer and mutant: beyond it the layer counts as hung (killed, flagged)
 
+MUTANT_SWITCH = ("collide/detail/mutant_switch.hpp", "collide_mutant() == {number}")
+PLANTED_SWITCH = ("collide/detail/planted_switch.hpp", "collide_planted({number})")
+
 SWITCH_HEADER = """#pragma once
 // Written by scripts/mutate.py into the mutation build only: which mutant is active, from the
 // environment variable COLLIDE_MUTANT (0 or unset: none), read once.
@@ -64,6 +68,43 @@ inline int collide_mutant() noexcept {
     return s != nullptr ? std::atoi(s) : 0;
   }();
   return id;
+}
+"""
+
+# The names of the planted faults in list order (fault K is names[K - 1]) fill in @NAMES@.
+PLANTED_SWITCH_HEADER = """#pragma once
+// Written by scripts/mutate.py into the planted-fault headers of the build tree only: which planted
+// faults are active, from the environment variable COLLIDE_PLANTED (names of
+// scripts/planted_faults.txt, comma-separated; unset: none), read once. An unknown name stops the
+// program, so a misspelt fault cannot pass for one that no check catches.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+inline bool collide_planted(int fault) noexcept {
+  static const unsigned long long active = [] {
+    static const char* const names[] = {@NAMES@};
+    unsigned long long bits = 0;
+    const char* s = std::getenv("COLLIDE_PLANTED");
+    while (s != nullptr && *s != '\\0') {
+      const char* comma = std::strchr(s, ',');
+      const std::size_t n = comma != nullptr ? static_cast<std::size_t>(comma - s) : std::strlen(s);
+      bool known = false;
+      for (std::size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
+        if (std::strlen(names[k]) == n && std::strncmp(names[k], s, n) == 0) {
+          bits |= 1ULL << (k + 1);
+          known = true;
+        }
+      }
+      if (!known) {
+        std::fprintf(stderr, "COLLIDE_PLANTED: no planted fault named '%.*s'\\n", static_cast<int>(n), s);
+        std::abort();
+      }
+      s = comma != nullptr ? comma + 1 : s + n;
+    }
+    return bits;
+  }();
+  return (active >> fault & 1ULL) != 0;
 }
 """
 
@@ -83,10 +124,10 @@ class Mutant:
     occurrence: int | None = None
     raw: bool = False
 
-    def replacement(self) -> str:
+    def replacement(self, condition: str) -> str:
         if self.raw:
             return self.mutated.replace("@ID@", str(self.number))
-        return f"(collide_mutant() == {self.number} ? ({self.mutated}) : ({self.original}))"
+        return f"({condition.format(number=self.number)} ? ({self.mutated}) : ({self.original}))"
 
 
 def parse_list(path: pathlib.Path) -> list[Mutant]:
@@ -117,8 +158,9 @@ def parse_list(path: pathlib.Path) -> list[Mutant]:
     return mutants
 
 
-def patch_sources(mutants: list[Mutant], src: pathlib.Path) -> dict[str, str]:
-    """Returns {relative path: patched text}; raises ListError naming every mutant that does not apply."""
+def patch_sources(mutants: list[Mutant], src: pathlib.Path, switch: tuple[str, str] = MUTANT_SWITCH) -> dict[str, str]:
+    """Returns {relative path: patched text}, each site behind switch (its header, its condition);
+    raises ListError naming every mutant that does not apply."""
     problems = []
     by_file: dict[str, list[tuple[int, Mutant]]] = {}
     for mu in mutants:
@@ -144,11 +186,11 @@ def patch_sources(mutants: list[Mutant], src: pathlib.Path) -> dict[str, str]:
             if a + len(ma.original) > b:
                 problems.append(f"  [{ma.name}] and [{mb.name}] overlap in {rel}")
         for start, mu in reversed(sites):
-            text = text[:start] + mu.replacement() + text[start + len(mu.original):]
+            text = text[:start] + mu.replacement(switch[1]) + text[start + len(mu.original):]
         if "#pragma once\n" not in text:
             problems.append(f"  {rel}: no '#pragma once' line to put the switch include after")
             continue
-        text = text.replace("#pragma once\n", '#pragma once\n#include "collide/detail/mutant_switch.hpp"\n', 1)
+        text = text.replace("#pragma once\n", f'#pragma once\n#include "{switch[0]}"\n', 1)
         patched[rel] = text
     if problems:
         raise ListError("these mutants do not apply to the current sources (edit scripts/mutants.txt):\n" +
@@ -156,26 +198,13 @@ def patch_sources(mutants: list[Mutant], src: pathlib.Path) -> dict[str, str]:
     return patched
 
 
-def planted_fault(name: str) -> Mutant:
-    """The planted fault `name` of scripts/planted_faults.txt."""
-    faults = {mu.name: mu for mu in parse_list(PLANTED)}
-    if name not in faults:
-        raise ListError(f"no planted fault named {name} in {PLANTED.name} (known: {', '.join(sorted(faults))})")
-    return faults[name]
-
-
-def planted_headers(names: str) -> dict[str, str]:
-    """Path relative to lib/include -> patched text, for the planted faults `names` (comma-separated;
-    several faults in one header are applied in turn)."""
-    out: dict[str, str] = {}
-    for name in names.split(","):
-        mu = planted_fault(name)
-        rel = mu.path.removeprefix("lib/include/")
-        text = out.get(rel) or (ROOT / mu.path).read_text()
-        if text.count(mu.original) != 1:
-            raise ListError(f"[{mu.name}] {mu.path}: original text found {text.count(mu.original)} times "
-                            "(need exactly 1)")
-        out[rel] = text.replace(mu.original, mu.mutated)
+def planted_headers() -> dict[str, str]:
+    """Path relative to lib/include -> text, for every header the planted faults touch (each fault
+    behind collide_planted(K)) and the planted switch header."""
+    faults = parse_list(PLANTED)
+    out = {rel.removeprefix("lib/include/"): text for rel, text in patch_sources(faults, ROOT, PLANTED_SWITCH).items()}
+    names = ", ".join(f'"{mu.name}"' for mu in faults)
+    out[PLANTED_SWITCH[0]] = PLANTED_SWITCH_HEADER.replace("@NAMES@", names)
     return out
 
 
@@ -291,10 +320,10 @@ def main() -> int:
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("COLLIDE_JOBS", "2")))
     ap.add_argument("--goal", type=float, default=10.0, help="seconds of checks within which each mutant must die")
     ap.add_argument("--check", action="store_true", help="only check that every mutant applies, then stop")
-    ap.add_argument("--planted", metavar="NAMES",
-                    help="write the planted faults NAMES (comma-separated; with --out) or their header paths")
+    ap.add_argument("--planted", action="store_true",
+                    help="write the planted faults' headers (with --out) or print their paths (--print-path)")
     ap.add_argument("--out", metavar="DIR", help="with --planted: the include directory to write into")
-    ap.add_argument("--print-path", action="store_true", help="with --planted: print the header's path in DIR")
+    ap.add_argument("--print-path", action="store_true", help="with --planted: print the headers' paths in DIR")
     args = ap.parse_args()
 
     try:
@@ -302,10 +331,10 @@ def main() -> int:
             # The path alone does not check the text: the mutation build configures a tree whose
             # headers carry mutant switches, and never builds the planted targets.
             if args.print_path:
-                paths = {planted_fault(n).path.removeprefix("lib/include/") for n in args.planted.split(",")}
-                print("\n".join(sorted(paths)))
+                paths = {mu.path.removeprefix("lib/include/") for mu in parse_list(PLANTED)}
+                print("\n".join(sorted(paths | {PLANTED_SWITCH[0]})))
             elif args.out:
-                for rel, text in planted_headers(args.planted).items():
+                for rel, text in planted_headers().items():
                     write_if_changed(pathlib.Path(args.out) / rel, text)
             else:
                 raise ListError("--planted needs --out DIR or --print-path")
@@ -313,8 +342,7 @@ def main() -> int:
         mutants = parse_list(LIST)
         patched = patch_sources(mutants, ROOT)
         planted = parse_list(PLANTED)
-        for mu in planted:
-            planted_headers(mu.name)
+        planted_headers()
     except ListError as e:
         print(f"mutate: {e}", file=sys.stderr)
         return 2
