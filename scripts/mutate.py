@@ -193,7 +193,8 @@ def patch_sources(mutants: list[Mutant], src: pathlib.Path, switch: tuple[str, s
         text = text.replace("#pragma once\n", f'#pragma once\n#include "{switch[0]}"\n', 1)
         patched[rel] = text
     if problems:
-        raise ListError("these mutants do not apply to the current sources (edit scripts/mutants.txt):\n" +
+        listed = "planted_faults.txt" if switch is PLANTED_SWITCH else "mutants.txt"
+        raise ListError(f"these mutants do not apply to the current sources (edit scripts/{listed}):\n" +
                         "\n".join(problems))
     return patched
 
@@ -202,6 +203,8 @@ def planted_headers() -> dict[str, str]:
     """Path relative to lib/include -> text, for every header the planted faults touch (each fault
     behind collide_planted(K)) and the planted switch header."""
     faults = parse_list(PLANTED)
+    if len(faults) > 63:
+        raise ListError(f"{PLANTED.name}: {len(faults)} faults, but the switch holds 63")
     out = {rel.removeprefix("lib/include/"): text for rel, text in patch_sources(faults, ROOT, PLANTED_SWITCH).items()}
     names = ", ".join(f'"{mu.name}"' for mu in faults)
     out[PLANTED_SWITCH[0]] = PLANTED_SWITCH_HEADER.replace("@NAMES@", names)
