@@ -9,12 +9,11 @@ bounding-box early-out uses the AABB test) and prints whether it caught the faul
 every law that can see the fault caught it. Counterexamples go to CASES_DIR (never into
 tests/regressions).
 
-With --suite placed, SUITE_EXECUTABLE is the suite of placed shapes (transform_test.cpp) built
-against the transform faults (scripts/planted_faults.txt: images turned the wrong way, a zero
-rotation accepted, a resolution margin 64 times too long); with --suite moving, the suite of moving
-shapes (cast_test.cpp) built against the cast faults. Every law of that suite (the law table's
-`suite` column, from collide_describe) must catch one; the placed suite runs on pairs without an
-AABB (so that the AABB slip is not what it sees).
+With --suite placed, SUITE_EXECUTABLE is the suite of placed shapes (transform_test.cpp), run with
+the transform faults on (scripts/planted_faults.txt: images turned the wrong way, a zero rotation
+accepted, a resolution margin 64 times too long); with --suite moving, the suite of moving shapes
+(cast_test.cpp), run with the cast faults on. Every law of that suite (the law table's `suite`
+column, from collide_describe) must catch one; the placed suite runs on pairs without an AABB.
 
 usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR --faults NAMES [--suite placed|moving]
 """
