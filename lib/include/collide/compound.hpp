@@ -89,12 +89,14 @@ Aabb<Calc> calc_box(const ConvexPolygon<T>& s) noexcept {
 /// operations that computed it, so the result is never smaller than the exact box.
 template <Scalar U>
 Aabb<U> bounds_from_calc(const Vec2c& lo, const Vec2c& hi) noexcept {
-  Vec2<U> out_lo, out_hi;
-  for (int i = 0; i < 2; ++i) {
-    const Calc pad = 8 * kUnitRoundoff * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + kSmallestDouble;
-    out_lo[i] = detail::round_down_to<U>(lo[i] - pad);
-    out_hi[i] = -detail::round_down_to<U>(-(hi[i] + pad));
-  }
+  // Each bound computed as a scalar and the vectors built whole: components stored one by one
+  // and read back as a pair would stall the load.
+  const auto pad = [&](int i) {
+    return 8 * kUnitRoundoff * std::max(std::fabs(lo[i]), std::fabs(hi[i])) + kSmallestDouble;
+  };
+  const Calc px = pad(0), py = pad(1);
+  const Vec2<U> out_lo(detail::round_down_to<U>(lo.x() - px), detail::round_down_to<U>(lo.y() - py));
+  const Vec2<U> out_hi(-detail::round_down_to<U>(-(hi.x() + px)), -detail::round_down_to<U>(-(hi.y() + py)));
   return Aabb<U>(detail::Unchecked{}, out_lo, out_hi);
 }
 

@@ -117,6 +117,11 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
       std::int32_t a, b;
     };
     LocalStack<Job> jobs;
+    // A pair of distinct nodes is pushed only when their boxes overlap: the walk visits the same
+    // pairs in the same order as testing them when popped, with a fraction of the stack traffic.
+    const auto push_if_overlapping = [&](std::int32_t x, std::int32_t y) {
+      if (boxes_overlap(node(x).box, node(y).box)) jobs.push({x, y});
+    };
     jobs.push({root_, root_});
     while (!jobs.empty()) {
       const Job j = jobs.pop();
@@ -125,22 +130,21 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
         if (a.leaf()) continue;
         jobs.push({a.child1, a.child1});
         jobs.push({a.child2, a.child2});
-        jobs.push({a.child1, a.child2});
+        push_if_overlapping(a.child1, a.child2);
         continue;
       }
       const Node& b = node(j.b);
-      if (!boxes_overlap(a.box, b.box)) continue;
       if (a.leaf() && b.leaf()) {
         const auto& sa = slots_[a.slot];
         const auto& sb = slots_[b.slot];
         const bool hit = boxes_overlap(sa.box, sb.box);
         if (hit && accepts(sa.filter, sb.filter) && !call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
       } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
-        jobs.push({a.child1, j.b});
-        jobs.push({a.child2, j.b});
+        push_if_overlapping(a.child1, j.b);
+        push_if_overlapping(a.child2, j.b);
       } else {
-        jobs.push({j.a, b.child1});
-        jobs.push({j.a, b.child2});
+        push_if_overlapping(j.a, b.child1);
+        push_if_overlapping(j.a, b.child2);
       }
     }
   }
