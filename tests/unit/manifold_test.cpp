@@ -168,6 +168,94 @@ TYPED_TEST(Manifolds, SpeculativeDistanceAddsNearPoints) {
   EXPECT_GT(double(std::max(spec->separations[0], spec->separations[1])), 0.0);
 }
 
+/// A capsule resting on the ground with only its radius sunk in (its segment above the ground):
+/// a point under each end, as under a box, so that a solver does not rock it about one end. The
+/// ids name the ground's top face (edge 2) and the capsule's ends (vertices 0 and 1). Tilted so
+/// that one end lifts clear, one point; a speculative distance reaching the other end adds it.
+TYPED_TEST(Manifolds, CapsuleRestingOnABoxHasAPointUnderEachEnd) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Aabb<T> ground(V(-4, -2), V(4, 0));
+  const auto c = contact(ground, Capsule<T>(V(-1, T(0.375)), V(1, T(0.375)), T(0.5)));
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  EXPECT_NEAR(double(c->normal.y()), 1.0, tol<T>());
+  EXPECT_NEAR(double(c->depth), 0.125, tol<T>());
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(double(c->separations[i]), -0.125, tol<T>());
+    EXPECT_NEAR(double(c->points[i].y()), -0.0625, tol<T>());
+  }
+  EXPECT_NEAR(std::fabs(double(c->points[0].x() - c->points[1].x())), 2.0, tol<T>());
+  const FeatureId want[2] = {face_on_a(2, 0), face_on_a(2, 1)};
+  EXPECT_TRUE(std::is_permutation(c->ids.begin(), c->ids.end(), std::begin(want)));
+  // The same capsule placed by a transform.
+  const auto placed = contact(ground, Transform<T>(), Capsule<T>(V(-1, 0), V(1, 0), T(0.5)),
+                              Transform<T>::make(V(0, T(0.375)), 0).value());
+  ASSERT_TRUE(placed.has_value());
+  EXPECT_EQ(placed->count, 2);
+  // Ends at y = 0.375 and 0.75: at the right end's x the capsule's surface is its flat side, lower
+  // than the end's own circle: 0.75 - 0.5 sqrt(1 + (0.375 / 2)^2) above the ground.
+  const Capsule<T> tilted(V(-1, T(0.375)), V(1, T(0.75)), T(0.5));
+  const auto one = contact(ground, tilted);
+  ASSERT_TRUE(one.has_value());
+  ASSERT_EQ(one->count, 1);
+  EXPECT_EQ(one->ids[0], face_on_a(2, 0));
+  const auto two = contact(ground, tilted, T(0.5));
+  ASSERT_TRUE(two.has_value());
+  ASSERT_EQ(two->count, 2);
+  EXPECT_NEAR(double(std::max(two->separations[0], two->separations[1])), 0.75 - 0.5 * std::sqrt(1 + 0.1875 * 0.1875),
+              tol<T>());
+}
+
+/// A capsule beyond a box's corner, 0.3 from both face lines but 0.3 sqrt(2) = 0.42 from the
+/// corner, with radius 0.35: no face line separates them by the radius, yet they are apart. Its
+/// nearest end lies beside both faces, so their separations are not the distance. Moved 0.4 left,
+/// its end is over the top face and it rests 0.05 deep on it: a point at each end of the part of
+/// its segment over the face (x = 0.9 and 1).
+TYPED_TEST(Manifolds, CapsuleBeyondABoxCornerWithinItsRadiusOfBothFaceLinesIsApart) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Aabb<T> box(V(-1, -1), V(1, 1));
+  const Capsule<T> beyond(V(T(1.3), T(1.3)), V(T(3.3), T(1.3)), T(0.35));
+  EXPECT_FALSE(overlaps(box, beyond));
+  EXPECT_FALSE(contact(box, beyond).has_value());
+  const auto over = contact(box, Capsule<T>(V(T(0.9), T(1.3)), V(T(2.9), T(1.3)), T(0.35)));
+  ASSERT_TRUE(over.has_value());
+  ASSERT_EQ(over->count, 2);
+  EXPECT_NEAR(double(over->normal.y()), 1.0, tol<T>());
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(double(over->separations[i]), -0.05, 1e-6);
+  EXPECT_NEAR(double(std::min(over->points[0].x(), over->points[1].x())), 0.9, 1e-6);
+  EXPECT_NEAR(double(std::max(over->points[0].x(), over->points[1].x())), 1.0, 1e-6);
+  const FeatureId want[2] = {face_on_a(2, 0), face_on_a(2, 1)};
+  EXPECT_TRUE(std::is_permutation(over->ids.begin(), over->ids.end(), std::begin(want)));
+}
+
+/// A crate hovering 0.25 over the ground, within the speculative distance: a point under each
+/// bottom corner, both 0.25 apart, with the ids it has when it rests on the ground
+/// (BoxRestingOnBoxHasTwoPointsWithFaceIds), so that a solver keeps its impulses as it lands.
+/// Beside a corner of the ground, the closest features are two vertices: one point.
+TYPED_TEST(Manifolds, CrateHoveringWithinTheSpeculativeDistanceHasTwoPoints) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Aabb<T> ground(V(-2, -2), V(2, 0));
+  const auto c = contact(ground, Aabb<T>(V(-1, T(0.25)), V(1, T(1.25))), T(0.5));
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  EXPECT_EQ(double(c->depth), 0.0);
+  EXPECT_NEAR(double(c->normal.y()), 1.0, tol<T>());
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(double(c->separations[i]), 0.25, tol<T>());
+    EXPECT_NEAR(double(c->points[i].y()), 0.125, tol<T>());
+  }
+  const FeatureId want[2] = {face_on_a(2, 0), face_on_a(2, 1)};
+  EXPECT_TRUE(std::is_permutation(c->ids.begin(), c->ids.end(), std::begin(want)));
+  const auto corner = contact(ground, Aabb<T>(V(T(2.25), T(0.25)), V(T(3.25), T(1.25))), T(0.5));
+  ASSERT_TRUE(corner.has_value());
+  ASSERT_EQ(corner->count, 1);
+  EXPECT_EQ(corner->ids[0].kind_a, FeatureKind::Vertex);
+  EXPECT_EQ(corner->ids[0].kind_b, FeatureKind::Vertex);
+}
+
 /// A capsule whose segment starts on a box's corner (up to rounding) and leaves it along a face's
 /// normal: the clipped segment lies on the side plane, rounding clips all of it, and the point
 /// comes from the witness candidates. It must be the midway one, half the depth inside the box

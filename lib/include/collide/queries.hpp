@@ -193,12 +193,14 @@ std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc specu
   }
 }
 
-/// The largest coordinate of a contact's deepest point (the least separation, the first of
-/// equals). A speculative distance only adds points farther apart, so this scale is the same with
-/// and without it.
+/// The index of a contact's deepest point: the least separation, the first of equals.
+inline std::size_t deepest_point(const CoreContact& c) noexcept {
+  return c.count > 1 && c.separations[1] < c.separations[0] ? 1 : 0;
+}
+/// The largest coordinate of a contact's deepest point. A speculative distance only adds points
+/// farther apart, so this scale is the same with and without it.
 inline Calc deepest_point_scale(const CoreContact& c) noexcept {
-  const std::size_t k = c.count > 1 && c.separations[1] < c.separations[0] ? 1 : 0;
-  return c.points[k].cwiseAbs().maxCoeff();
+  return c.points[deepest_point(c)].cwiseAbs().maxCoeff();
 }
 
 /// Overlapping contacts before speculative ones, then the deeper (or the nearer) by more than a
@@ -207,7 +209,8 @@ inline Calc deepest_point_scale(const CoreContact& c) noexcept {
 inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexcept {
   if (c.overlapping != than.overlapping) return c.overlapping;
   const Calc tie = tie_of(std::max(deepest_point_scale(c), deepest_point_scale(than)));
-  return c.overlapping ? c.depth > than.depth + tie : c.separations[0] < than.separations[0] - tie;
+  return c.overlapping ? c.depth > than.depth + tie
+                       : c.separations[deepest_point(c)] < than.separations[deepest_point(than)] - tie;
 }
 
 /// The contact of concrete shapes, stored or placed (images, placed compounds).
@@ -255,8 +258,10 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0
 /// Contact with a speculative distance (in the shapes' units), as a solver uses to stop shapes
 /// before they meet: present when overlaps(a, b), and also when the shapes are apart by at most
 /// `speculative` (decided on the rounded gap: a pair within a few rounding_tolerance(a, b) of
-/// that distance may go either way). A speculative contact of shapes apart has depth 0 and one
-/// point between the closest points, its separation the gap (> 0 up to rounding); an overlapping
+/// that distance may go either way). A speculative contact of shapes apart has depth 0 and, when
+/// the closest points lie inside a face, the other shape's facing side clipped to it (a point per
+/// end apart by at most `speculative`), else one point between the closest points; its least
+/// separation is the gap (>= 0); an overlapping
 /// pair keeps the points of contact(a, b) and adds clipped points apart by at most `speculative`.
 /// overlaps() stays the exact answer. A negative or NaN `speculative` counts as 0 (contact(a, b));
 /// an infinite one reports every pair. For compounds, an overlapping child pair wins over the

@@ -3,7 +3,8 @@
 /// Contact generation for two convex cores (a point, a segment or a convex polygon, each dilated
 /// by a radius: see detail/core.hpp) that are known to overlap, in named steps:
 ///   1. contact_of_separate_cores: cores apart (only the radii meet): the closest points give the
-///      normal, one point midway.
+///      normal; when they lie inside a face, the other core's facing side is clipped to it as in
+///      steps 3 to 5 (a capsule resting on a box touches under both ends), else one point midway.
 ///   2. find_reference_face: otherwise the face of least penetration over both cores' faces.
 ///   3. find_incident_face: the other core's face most anti-parallel to it (or its point).
 ///   4. clip_to_reference_face: the incident face clipped to the reference face's side planes.
@@ -66,41 +67,23 @@ inline Calc point_scale(const Core& p, const Core& q) noexcept {
 struct ClosestNormal {
   Vec2c normal;
   Calc distance;
+  int owner = -1;     ///< the core whose face gave the normal (0: p, 1: q), -1 for the points' own
+  unsigned face = 0;  ///< that face's index (a segment's side 0 or 1)
 };
 inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest& cl) {
   const Vec2c d = cl.on_q - cl.on_p;
-  for (const auto& [c, f] : {std::pair<const Core&, const CoreFeature&>{q, cl.feature_q}, {p, cl.feature_p}}) {
+  for (int owner = 1; owner >= 0; --owner) {
+    const Core& c = owner == 1 ? q : p;
+    const CoreFeature& f = owner == 1 ? cl.feature_q : cl.feature_p;
     if (!f.edge || c.size() < 2) continue;
     const std::size_t i = c.size() == 2 ? 0 : f.index;  // a segment's sides share its one edge
     const Vec2c e = c[i + 1 < c.size() ? i + 1 : 0] - c[i];
     if (e.squaredNorm() < d.squaredNorm()) continue;
     Vec2c n = unit_of(Vec2c(e.y(), -e.x()));
     if (n.dot(d) < 0) n = -n;
-    if (n != Vec2c::Zero()) return {n, d.dot(n)};
+    if (n != Vec2c::Zero()) return {n, d.dot(n), owner, f.index};
   }
   return {unit_of(d), norm_of(d)};
-}
-
-/// Step 1 from the closest points cl of the cores p and q (see contact_of_separate_cores()).
-inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core& q, const Closest& cl) {
-  const ClosestNormal cn = closest_normal(p, q, cl);
-  if (!(cn.distance > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
-  CoreContact out;
-  out.normal = cn.normal;
-  out.depth = std::max(Calc(0), p.radius + q.radius - cn.distance);
-  const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
-  out.points[0] = (sp + sq) * 0.5;
-  out.separations[0] = cn.distance - p.radius - q.radius;
-  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
-  out.count = 1;
-  return out;
-}
-
-/// Step 1: cores apart, radii overlapping. Contact along the closest points, or nullopt when the
-/// gap is at the level of rounding (a point that misses a segment through it only because the
-/// segment's ends were rounded): such a gap has no reliable direction, the faces decide instead.
-inline std::optional<CoreContact> contact_of_separate_cores(const Core& p, const Core& q) {
-  return contact_from_closest(p, q, closest_points(p, q));
 }
 
 /// The face of least penetration: which core owns it, its ends and its outward normal.
@@ -126,6 +109,27 @@ inline ReferenceFace find_reference_face(const Core& p, const Core& q, const Axi
     f.r2 = ref[next_index(ax.face, ref.size())];
   }
   return f;
+}
+
+/// Whether the incident core's vertex least far along the reference face's normal (the first of
+/// equals) projects strictly inside the face. Then, for cores apart along the face, that vertex
+/// lies in the face's Voronoi region and the cores' distance is the face's separation: the whole
+/// incident core lies at least that far beyond the face's line, and the vertex that far from a
+/// point of the face.
+inline bool nearest_vertex_over_face(const ReferenceFace& f) noexcept {
+  const Core& inc = *f.inc;
+  std::size_t k = 0;
+  Calc least = (inc[0] - f.r1).dot(f.normal);
+  for (std::size_t j = 1; j < inc.size(); ++j) {
+    const Calc s = (inc[j] - f.r1).dot(f.normal);
+    if (s < least) {
+      least = s;
+      k = j;
+    }
+  }
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc along = (inc[k] - f.r1).dot(tangent);
+  return along > 0 && along < tangent.squaredNorm();
 }
 
 /// The rounding of (x - r1) . tangent for the points x of two cores, tangent = r2 - r1 of squared
@@ -232,27 +236,100 @@ inline FeatureId face_point_id(const ReferenceFace& f, unsigned v) noexcept {
   return f.owner == 0 ? id_of(face, vertex) : id_of(vertex, face);
 }
 
+/// How much further toward the reference face than a clipped end x's own circle the incident
+/// shape reaches at x's place along the face: 0 except for a segment with a radius tilted to the
+/// face, whose points nearer the face have circles reaching below x's. In coordinates along the
+/// face (u) and the normal (s) from the segment's first end, the circle of the segment's point at
+/// length l reaches down to l t_s - sqrt(r^2 - (l t_u - u_x)^2) at u_x, (t_u, t_s) the segment's
+/// unit direction: least at l t_u - u_x = -r t_s sign(t_u), clamped to the segment.
+inline Calc incident_sink(const ReferenceFace& f, const Vec2c& x) noexcept {
+  const Core& inc = *f.inc;
+  const Calc r = inc.radius;
+  if (inc.size() != 2 || !(r > 0)) return 0;
+  const Vec2c d = inc[1] - inc[0];
+  const Calc rise = d.dot(f.normal);
+  if (rise == 0) return 0;  // parallel to the face
+  const Calc len = norm_of(d);
+  const Vec2c tangent(-f.normal.y(), f.normal.x());
+  const Calc tu = d.dot(tangent) / len, ts = rise / len, ux = (x - inc[0]).dot(tangent);
+  const Calc l = tu == 0 ? (ts > 0 ? Calc(0) : len) : std::clamp((ux + (tu > 0 ? -r : r) * ts) / tu, Calc(0), len);
+  const Calc k = std::min(std::fabs(l * tu - ux) / r, Calc(1));  // r^2 - z^2 = r^2 (1 - k)(1 + k), unsquared
+  const Calc lowest = l * ts - r * std::sqrt((1 - k) * (1 + k));
+  return std::max(Calc(0), (x - inc[0]).dot(f.normal) - r - lowest);
+}
+
 /// Step 5: the clipped ends within reach of the radii plus the speculative distance, each moved
 /// midway between the surfaces, with its separation (s - the radii). An end beyond reach by no
 /// more than the rounding of s is kept: an end exactly at reach (a segment lying on a face) must
-/// not come and go with the rounding as the pair moves.
+/// not come and go with the rounding as the pair moves. The end of a tilted segment with a radius
+/// is first lowered by incident_sink(), so that its surface point is the shape's there.
 inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out,
                                      Calc speculative = 0) {
   const Calc ref_radius = f.ref->radius, inc_radius = f.inc->radius;
   const Calc reach = ref_radius + inc_radius + speculative;
   Calc band = -1;  // computed only for an end beyond reach
   for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
-    const Calc s = (face.ends[i] - f.r1).dot(f.normal);
+    const Vec2c end = face.ends[i] - f.normal * incident_sink(f, face.ends[i]);
+    const Calc s = (end - f.r1).dot(f.normal);
     if (s > reach) {
       if (band < 0) band = kOverlapErrorFactor * kUnitRoundoff * std::max(point_scale(*f.ref, *f.inc), reach);
       if (s > reach + band) continue;
     }
     const std::size_t k = std::size_t(out.count++);
-    out.points[k] = face.ends[i] + f.normal * ((ref_radius - s - inc_radius) * 0.5);
+    out.points[k] = end + f.normal * ((ref_radius - s - inc_radius) * 0.5);
     out.separations[k] = s - ref_radius - inc_radius;
     out.ids[k] = face_point_id(f, face.vertices[i]);
   }
   if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
+}
+
+/// Step 1, with the normal of a face (closest_normal() found the closest points inside it) and
+/// neither core a point: the other core's incident face clipped to that face as steps 3 to 5 clip
+/// it, so that a side lying along the face (a capsule resting on a box, a box within a speculative
+/// distance of another) gets a point at each end of their common span, each with its own
+/// separation. Count 0 (the one point between the closest points stands) when clipping keeps
+/// nothing or loses the closest points, whose separation must be the least.
+inline CoreContact clip_to_closest_face(const Core& p, const Core& q, const ClosestNormal& cn, Calc speculative,
+                                        const Vec2c* normals_p, const Vec2c* normals_q) {
+  CoreContact out;
+  out.normal = cn.normal;
+  if (cn.owner < 0 || p.size() < 2 || q.size() < 2) return out;
+  const Calc radii = p.radius + q.radius;
+  const ReferenceFace f = find_reference_face(p, q, Axis{cn.normal, radii - cn.distance, cn.owner, cn.face});
+  IncidentFace face = find_incident_face(f, cn.owner == 0 ? normals_q : normals_p);
+  if (clip_to_reference_face(face, f)) keep_points_within_reach(face, f, out, speculative);
+  const Calc least = out.count > 1 ? std::min(out.separations[0], out.separations[1]) : out.separations[0];
+  if (out.count > 0 && !(least <= cn.distance - radii)) {
+    const Calc band = kOverlapErrorFactor * kUnitRoundoff * std::max(point_scale(p, q), radii);
+    if (!(least <= cn.distance - radii + band)) out.count = 0;
+  }
+  return out;
+}
+
+/// Step 1 from the closest points cl of the cores p and q (see contact_of_separate_cores()).
+/// speculative: clipped points apart by up to it are kept too; normals_p and normals_q as for
+/// contact_from_axis().
+inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core& q, const Closest& cl,
+                                                       Calc speculative = 0, const Vec2c* normals_p = nullptr,
+                                                       const Vec2c* normals_q = nullptr) {
+  const ClosestNormal cn = closest_normal(p, q, cl);
+  if (!(cn.distance > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
+  CoreContact out = clip_to_closest_face(p, q, cn, speculative, normals_p, normals_q);
+  out.depth = std::max(Calc(0), p.radius + q.radius - cn.distance);
+  if (out.count > 0) return out;
+  const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
+  out.points[0] = (sp + sq) * 0.5;
+  out.separations[0] = cn.distance - p.radius - q.radius;
+  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  out.count = 1;
+  return out;
+}
+
+/// Step 1: cores apart, radii overlapping. Contact along the closest points, or nullopt when the
+/// gap is at the level of rounding (a point that misses a segment through it only because the
+/// segment's ends were rounded): such a gap has no reliable direction, the faces decide instead.
+inline std::optional<CoreContact> contact_of_separate_cores(const Core& p, const Core& q, Calc speculative = 0) {
+  return contact_from_closest(p, q, closest_points(p, q), speculative);
 }
 
 /// How far x lies outside the dilated core c (0 inside).
@@ -354,7 +431,7 @@ inline Calc owner_tie(const Core& p, const Core& q) noexcept {
 /// cores_meet: the caller knows the cores themselves intersect (radius-free shapes that overlap).
 inline CoreContact contact_cores_at_scale(const Core& p, const Core& q, Calc speculative = 0, bool cores_meet = false) {
   if (!cores_meet && !cores_intersect(p, q)) {
-    if (const std::optional<CoreContact> c = contact_of_separate_cores(p, q)) return *c;
+    if (const std::optional<CoreContact> c = contact_of_separate_cores(p, q, speculative)) return *c;
   }
   return contact_from_axis(p, q, least_penetration(p, q, owner_tie(p, q)), speculative);
 }
@@ -374,18 +451,29 @@ inline CoreContact contact_cores(const Core& p, const Core& q, Calc speculative 
   return unscaled(contact_cores_at_scale(scaled(p, k), scaled(q, k), std::ldexp(speculative, k), cores_meet), k);
 }
 
-/// Speculative contact of two dilated cores that do not overlap, at their own scale: one point
-/// between the closest points, its separation the gap; nullopt when the gap exceeds speculative.
-/// A gap at the level of rounding takes its normal from the faces (as contact_of_separate_cores).
+/// Speculative contact of two dilated cores that do not overlap, at their own scale: as step 1,
+/// the facing side clipped to the face the closest points lie inside (each point apart by at most
+/// speculative), else one point between the closest points, its separation the gap; nullopt when
+/// the gap exceeds speculative. A gap at the level of rounding takes its normal from the faces (as
+/// contact_of_separate_cores). Separations are at least 0.
 inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, const Core& q, Calc speculative) {
   const Closest cl = closest_points(p, q);
   const Calc d = norm_of(cl.on_q - cl.on_p);
   const Calc gap = std::max(Calc(0), d - p.radius - q.radius);
   if (!(gap <= speculative)) return std::nullopt;
   CoreContact out;
+  if (d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q)) {
+    const ClosestNormal cn = closest_normal(p, q, cl);
+    out = clip_to_closest_face(p, q, cn, speculative, nullptr, nullptr);
+    if (out.count > 0) {
+      out.overlapping = false;
+      for (Calc& s : out.separations) s = std::max(s, Calc(0));
+      return out;
+    }
+  } else {
+    out.normal = least_penetration(p, q).normal;
+  }
   out.overlapping = false;
-  out.normal = d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q) ? closest_normal(p, q, cl).normal
-                                                                           : least_penetration(p, q).normal;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
   out.separations[0] = gap;

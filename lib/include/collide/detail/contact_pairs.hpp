@@ -223,11 +223,19 @@ template <class A, class B>
   }
   // A face separating the shapes themselves by more than the band and the speculative distance.
   if (polygon && ax.depth < -band - std::max(speculative, Calc(0))) return std::nullopt;
+  // Cores clearly apart along a face with the other core's nearest vertex over it: the face's
+  // separation is the cores' distance, and the face is the reference face, without the closest
+  // points (a capsule resting on a box).
+  if (!radius_free && polygon && core_depth < -band && ax.owner >= 0 &&
+      nearest_vertex_over_face(find_reference_face(p, q, ax))) {
+    if (!(ax.depth > band || (!(ax.depth < -band) && decide_exactly(a, b)))) return speculative_or_none();
+    return contact_on(ax);
+  }
   const Closest cl = closest_points(p, q);
   const Calc gap = std::sqrt(cl.dist2) - radii;
   if (!(gap < -band || (!(gap > band) && decide_exactly(a, b)))) return speculative_or_none();
   if (!radius_free) {
-    if (const std::optional<CoreContact> c = contact_from_closest(p, q, cl)) return c;
+    if (const std::optional<CoreContact> c = contact_from_closest(p, q, cl, speculative, np, nq)) return c;
   }
   return contact_on(axis(-std::numeric_limits<Calc>::infinity()));
 }
