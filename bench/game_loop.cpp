@@ -7,7 +7,8 @@
 //      collide's loop runs a second time on sort and sweep, the structure that suits many
 //      similar bodies moving coherently;
 //   3. narrowphase: a contact manifold for every candidate pair.
-// collide: local shapes with Transform<float>, DynamicTree, contact(a, xa, b, xb). Box2D 2.4.1:
+// collide: local shapes with Transform<float>, DynamicTree, Narrowphase (contact(a, xa, b, xb) of
+// every pair, run kind pair by kind pair). Box2D 2.4.1:
 // b2Shape with b2Transform, b2DynamicTree, b2Collide* (polygon skin radius 0, capsules as 2-gons
 // with a radius, as Box2D v3 treats them). The motion itself (integration, bouncing off the
 // walls) is outside the timed phases. Counters: milliseconds of this thread's CPU time per frame
@@ -187,7 +188,8 @@ Timings run_collide(const Scene& s, int frames = kFrames) {
     xf[i] = collide::Transform<float>::make(p[i], a[i]).value();
     id[i] = tree.add(collide::bounds(s.shapes[i], xf[i]), i);
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<bp::ShapePair> pairs;
+  bp::Narrowphase<float> narrowphase;
   Timings t;
   for (int frame = 0; frame < frames; ++frame) {
     advance(p, v, a, s);
@@ -204,16 +206,14 @@ Timings run_collide(const Scene& s, int frames = kFrames) {
     }
     pairs.clear();
     tree.for_each_pair([&](bp::ProxyId x, bp::ProxyId y) {
-      const auto i = static_cast<std::uint32_t>(tree.user_data(x)), j = static_cast<std::uint32_t>(tree.user_data(y));
-      pairs.emplace_back(std::min(i, j), std::max(i, j));
+      const std::size_t i = tree.user_data(x), j = tree.user_data(y);
+      pairs.push_back({std::min(i, j), std::max(i, j)});
     });
     const auto t2 = Clock::now();
-    for (const auto& [i, j] : pairs) {
-      if (const auto c = collide::contact(s.shapes[i], xf[i], s.shapes[j], xf[j])) {
-        ++t.contacts;
-        t.points += std::size_t(c->count);
-      }
-    }
+    narrowphase.for_each_contact(s.shapes, xf, pairs, [&](std::size_t, const collide::Contact<float>& c) {
+      ++t.contacts;
+      t.points += std::size_t(c.count);
+    });
     const auto t3 = Clock::now();
     t.transforms += ms(t0, t1);
     t.broadphase += ms(t1, t2);

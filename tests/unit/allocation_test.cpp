@@ -8,7 +8,11 @@
 
 #include "support.hpp"
 
+#include <collide/broadphase.hpp>
+
 #include <atomic>
+#include <span>
+#include <vector>
 #include <cstdlib>
 #include <limits>
 #include <new>
@@ -266,6 +270,42 @@ void check_pair_casts() {
 
 TYPED_TEST(Allocation, NoCastOrTimeOfImpactAllocatesForAnyPair) {
   for_each_pair([]<ShapeKind A, ShapeKind B>() { check_pair_casts<A, B, TypeParam>(); });
+}
+
+// The narrowphase of a frame allocates only to grow its buffers: after reserve(), and after a
+// larger batch, a batch of every kind pair (overlapping and apart) allocates nothing.
+TYPED_TEST(Allocation, NarrowphaseAllocatesOnlyToGrowItsBuffers) {
+  using T = TypeParam;
+  namespace bp = collide::broadphase;
+  std::vector<Shape<T>> shapes;
+  std::vector<Transform<T>> transforms;
+  for (const T x : {T(0), T(1.5), T(9)}) {
+    for_each_kind([&]<ShapeKind K>() {
+      shapes.emplace_back(make_kind<K, T>(Vec2<T>(0, 0), T(1)));
+      transforms.emplace_back(Vec2<T>(x, T(0.25) * T(shapes.size() % 4)), T(0.3) * T(shapes.size()));
+    });
+  }
+  std::vector<bp::ShapePair> pairs;
+  for (std::size_t a = 0; a < shapes.size(); ++a) {
+    for (std::size_t b = 0; b < shapes.size(); ++b) {
+      if (a != b) pairs.push_back({a, b});
+    }
+  }
+  const auto run = [&](bp::Narrowphase<T>& narrow, std::span<const bp::ShapePair> batch) {
+    std::size_t contacts = 0;
+    narrow.for_each_contact(shapes, transforms, batch,
+                            [&](std::size_t, const Contact<T>& c) { contacts += std::size_t(c.count); });
+    return contacts;
+  };
+  bp::Narrowphase<T> reserved;
+  reserved.reserve(pairs.size());
+  std::size_t contacts = 0;
+  EXPECT_EQ(0, allocations_in([&] { contacts = run(reserved, pairs); })) << "after reserve()";
+  EXPECT_GT(contacts, 0u) << "no pair met: the batch exercised no contact path";
+  bp::Narrowphase<T> grown;
+  EXPECT_GT(allocations_in([&] { run(grown, pairs); }), 0) << "the first batch had no buffers to fill";
+  EXPECT_EQ(0, allocations_in([&] { run(grown, std::span<const bp::ShapePair>(pairs).first(pairs.size() / 2)); }))
+      << "a smaller batch after a larger one";
 }
 
 }  // namespace

@@ -28,6 +28,7 @@
 #include "collide/broadphase/common.hpp"
 #include "collide/broadphase/events.hpp"
 #include "collide/broadphase/grid.hpp"
+#include "collide/broadphase/narrowphase.hpp"
 #include "collide/broadphase/sweep.hpp"
 #include "collide/broadphase/tree.hpp"
 #include "collide/broadphase/world.hpp"

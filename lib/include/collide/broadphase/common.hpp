@@ -26,12 +26,14 @@ namespace collide::broadphase {
 
 /// Why a broadphase call was refused.
 enum class BroadphaseErrc : std::uint8_t {
-  InvalidProxy,   ///< the handle was never issued by this structure, or its proxy was removed
-  BadBox,         ///< a box given as raw corners is NaN, infinite, out of range or inverted
-  BadMargin,      ///< fattening margin is negative, NaN, infinite or above max_magnitude<T>()
-  BadCellSize,    ///< grid cell size is not a positive finite value
-  BadRay,         ///< ray origin/direction/length is NaN or infinite, or the length is negative
-  TooManyProxies  ///< more than 2^32 - 2 live proxies
+  InvalidProxy,    ///< the handle was never issued by this structure, or its proxy was removed
+  BadBox,          ///< a box given as raw corners is NaN, infinite, out of range or inverted
+  BadMargin,       ///< fattening margin is negative, NaN, infinite or above max_magnitude<T>()
+  BadCellSize,     ///< grid cell size is not a positive finite value
+  BadRay,          ///< ray origin/direction/length is NaN or infinite, or the length is negative
+  TooManyProxies,  ///< more than 2^32 - 2 live proxies
+  BadPair,         ///< a candidate pair names a shape beyond its list, or the lists differ in length
+  Reentered        ///< a Narrowphase called from the callback of its own running batch
 };
 
 /// Stable name of a broadphase error, e.g. "InvalidProxy".
@@ -49,6 +51,10 @@ constexpr std::string_view name(BroadphaseErrc e) noexcept {
       return "BadRay";
     case BroadphaseErrc::TooManyProxies:
       return "TooManyProxies";
+    case BroadphaseErrc::BadPair:
+      return "BadPair";
+    case BroadphaseErrc::Reentered:
+      return "Reentered";
   }
   return "Unknown";
 }
