@@ -261,8 +261,8 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0
 /// that distance may go either way). A speculative contact of shapes apart has depth 0 and, when
 /// the closest points lie inside a face, the other shape's facing side clipped to it (a point per
 /// end apart by at most `speculative`), else one point between the closest points; its least
-/// separation is the gap (>= 0); an overlapping
-/// pair keeps the points of contact(a, b) and adds clipped points apart by at most `speculative`.
+/// separation is the gap (>= 0); an overlapping pair keeps the points of contact(a, b) and adds
+/// clipped points apart by at most `speculative`.
 /// overlaps() stays the exact answer. A negative or NaN `speculative` counts as 0 (contact(a, b));
 /// an infinite one reports every pair. For compounds, an overlapping child pair wins over the
 /// nearest pair apart.

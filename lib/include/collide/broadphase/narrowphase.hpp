@@ -42,7 +42,7 @@ class Narrowphase {
   /// Calls f(i, contact) for every pair i of `pairs` whose shapes are in contact, grouped by kind
   /// pair (see the class). `speculative` is contact()'s: points are also reported for shapes
   /// apart by at most it; 0 (the default) reports overlapping shapes only.
-  /// Errors (thrown before f is first called, nothing changed): BadPair when transforms.size()
+  /// Errors (thrown before f is first called): BadPair when transforms.size()
   /// differs from shapes.size(), or a pair names a shape at or beyond shapes.size(); Reentered
   /// when called from f of a call on this Narrowphase.
   /// Whatever f throws leaves the call at once; the Narrowphase stays usable.
@@ -50,7 +50,8 @@ class Narrowphase {
   void for_each_contact(std::span<const Shape<T>> shapes, std::span<const Transform<T>> transforms,
                         std::span<const ShapePair> pairs, F&& f, T speculative = T(0)) {
     if (running_) throw BroadphaseError(BroadphaseErrc::Reentered, "Narrowphase called from its own callback");
-    check_lists(shapes, transforms, pairs);
+    if (transforms.size() != shapes.size())
+      throw BroadphaseError(BroadphaseErrc::BadPair, "shapes and transforms differ in length");
     running_ = true;
     const struct Done {
       bool& running;
@@ -87,21 +88,11 @@ class Narrowphase {
   std::size_t capacity() const noexcept { return std::min(order_.capacity(), kinds_.capacity()); }
 
  private:
-  static constexpr std::size_t kKinds = std::variant_size_v<Shape<T>>;
-  static constexpr std::size_t kRuns = kKinds * kKinds;
+  static constexpr std::size_t kRuns = kKindCount * kKindCount;
 
-  static void check_lists(std::span<const Shape<T>> shapes, std::span<const Transform<T>> transforms,
-                          std::span<const ShapePair> pairs) {
-    if (transforms.size() != shapes.size())
-      throw BroadphaseError(BroadphaseErrc::BadPair, "shapes and transforms differ in length");
-    for (const ShapePair& p : pairs) {
-      if (p.a >= shapes.size() || p.b >= shapes.size())
-        throw BroadphaseError(BroadphaseErrc::BadPair, "a pair names a shape beyond the list");
-    }
-  }
-
-  /// A counting sort of the pairs' indices by kind pair into order_ (stable); returns where each
-  /// kind pair's run begins, and its end as the next run's beginning.
+  /// A counting sort of the pairs' indices by kind pair into order_ (stable), refusing a pair
+  /// beyond the list on the way (BadPair); returns where each kind pair's run begins, and its end
+  /// as the next run's beginning.
   std::array<std::size_t, kRuns + 1> sort_by_kinds(std::span<const Shape<T>> shapes, std::span<const ShapePair> pairs) {
     const std::size_t n = pairs.size();
     if (order_.size() < n) {
@@ -110,7 +101,11 @@ class Narrowphase {
     }
     std::array<std::size_t, kRuns + 1> start{};
     for (std::size_t i = 0; i < n; ++i) {
-      const auto run = static_cast<std::uint8_t>(shapes[pairs[i].a].index() * kKinds + shapes[pairs[i].b].index());
+      const ShapePair& p = pairs[i];
+      if (p.a >= shapes.size() || p.b >= shapes.size())
+        throw BroadphaseError(BroadphaseErrc::BadPair, "a pair names a shape beyond the list");
+      const auto run =
+          static_cast<std::uint8_t>(std::size_t(kind(shapes[p.a])) * kKindCount + std::size_t(kind(shapes[p.b])));
       kinds_[i] = run;
       ++start[run + 1];
     }
