@@ -68,14 +68,10 @@ Aabb<Calc> calc_box(const Obb<T>& s) noexcept {
   const Vec2c ext = (u * Calc(s.half_extents().x())).cwiseAbs() + (perp(u) * Calc(s.half_extents().y())).cwiseAbs();
   return AabbAccess::unchecked<Calc>(c - ext, c + ext);
 }
-/// The box of a polygon's stored vertices: exact.
+/// The box of a polygon's stored vertices (cached): exact.
 template <Scalar T>
 Aabb<T> vertex_box(const ConvexPolygon<T>& s) noexcept {
-  Vec2<T> lo = s[0], hi = s[0];
-  for (const Vec2<T>& p : s.vertices()) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = PolygonAccess::box(s);
   return AabbAccess::unchecked<T>(lo, hi);
 }
 template <Scalar T>

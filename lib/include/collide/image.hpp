@@ -38,14 +38,24 @@ struct ShapeAccess {
   static Capsule<T> capsule(const Vec2<T>& a, const Vec2<T>& b, T r) noexcept {
     return Capsule<T>(Unchecked{}, a, b, r);
   }
-  /// A polygon of n vertices, vertex k = at(k); allocates only beyond kInline vertices.
+  /// A polygon of n >= 1 vertices, vertex k = at(k) (called once for each k, in order), with its
+  /// box; allocates only beyond kInline vertices.
   template <Scalar T, class At>
   static ConvexPolygon<T> polygon(std::size_t n, At&& at) {
     ConvexPolygon<T> poly;
     poly.size_ = n;
     if (n > ConvexPolygon<T>::kInline) poly.heap_.resize(n);
     Vec2<T>* out = n > ConvexPolygon<T>::kInline ? poly.heap_.data() : poly.inline_.data();
-    for (std::size_t k = 0; k < n; ++k) out[k] = at(k);
+    Vec2<T> lo = at(0), hi = lo;
+    out[0] = lo;
+    for (std::size_t k = 1; k < n; ++k) {
+      const Vec2<T> v = at(k);
+      out[k] = v;
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    poly.lo_ = lo;
+    poly.hi_ = hi;
     return poly;
   }
   /// Caches normal(k) as edge k's unit outward normal (a polygon of at most kInline vertices).

@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -447,6 +448,7 @@ class ConvexPolygon {
     if (poly.size_ > kInline) poly.heap_.resize(poly.size_);
     Vec2<T>* out = poly.size_ > kInline ? poly.heap_.data() : poly.inline_.data();
     for (std::size_t k = 0; k < idx.size(); ++k) out[k] = vertices[idx[k]];
+    poly.cache_box();
     poly.cache_normals();
     return poly;
   }
@@ -503,6 +505,14 @@ class ConvexPolygon {
   friend struct detail::ShapeAccess;
   friend struct detail::PolygonAccess;
   ConvexPolygon() = default;
+  /// The box of the vertices, so that a pair of boxes apart is told without reading them.
+  void cache_box() noexcept {
+    lo_ = hi_ = vertices()[0];
+    for (const Vec2<T>& p : vertices()) {
+      lo_ = lo_.cwiseMin(p);
+      hi_ = hi_.cwiseMax(p);
+    }
+  }
   /// Every edge's unit outward normal, for the contact paths, and the turn margin, for images
   /// (polygons of at most kInline vertices).
   void cache_normals() noexcept {
@@ -515,6 +525,7 @@ class ConvexPolygon {
   std::array<Vec2<T>, kInline> inline_{};
   std::vector<Vec2<T>> heap_;
   std::size_t size_ = 0;
+  Vec2<T> lo_ = Vec2<T>::Zero(), hi_ = Vec2<T>::Zero();  ///< the smallest and largest coordinates of the vertices
   std::array<Vec2c, kInline> normals_{};
   bool normals_cached_ = false;
   Calc turn_margin_ = 0;  ///< detail::turn_margin() of the vertices, or 0 (not computed)
@@ -529,6 +540,11 @@ struct PolygonAccess {
   template <Scalar T>
   static const Vec2c* normals(const ConvexPolygon<T>& s) noexcept {
     return s.normals_cached_ ? s.normals_.data() : nullptr;
+  }
+  /// The smallest and largest coordinates of the polygon's vertices (cached by every polygon).
+  template <Scalar T>
+  static std::pair<Vec2<T>, Vec2<T>> box(const ConvexPolygon<T>& s) noexcept {
+    return {s.lo_, s.hi_};
   }
   /// The polygon's cached turn_margin(), or 0 when it has none.
   template <Scalar T>

@@ -90,11 +90,7 @@ RoughBox rough_box(const Obb<T>& s) noexcept {
 }
 template <Scalar T>
 RoughBox rough_box(const ConvexPolygon<T>& s) noexcept {
-  Vec2<T> lo = s[0], hi = s[0];
-  for (const Vec2<T>& p : s.vertices()) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = PolygonAccess::box(s);
   return {widen(lo), widen(hi)};
 }
 
