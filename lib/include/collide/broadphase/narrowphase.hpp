@@ -89,6 +89,7 @@ class Narrowphase {
 
  private:
   static constexpr std::size_t kRuns = kKindCount * kKindCount;
+  static_assert(kRuns <= 256, "kinds_ holds a kind pair in one byte");
 
   /// A counting sort of the pairs' indices by kind pair into order_ (stable), refusing a pair
   /// beyond the list on the way (BadPair); returns where each kind pair's run begins, and its end

@@ -236,40 +236,60 @@ inline FeatureId face_point_id(const ReferenceFace& f, unsigned v) noexcept {
   return f.owner == 0 ? id_of(face, vertex) : id_of(vertex, face);
 }
 
-/// How much further toward the reference face than a clipped end x's own circle the incident
-/// shape reaches at x's place along the face: 0 except for a segment with a radius tilted to the
-/// face, whose points nearer the face have circles reaching below x's. In coordinates along the
-/// face (u) and the normal (s) from the segment's first end, the circle of the segment's point at
-/// length l reaches down to l t_s - sqrt(r^2 - (l t_u - u_x)^2) at u_x, (t_u, t_s) the segment's
-/// unit direction: least at l t_u - u_x = -r t_s sign(t_u), clamped to the segment.
-inline Calc incident_sink(const ReferenceFace& f, const Vec2c& x) noexcept {
-  const Core& inc = *f.inc;
-  const Calc r = inc.radius;
-  if (inc.size() != 2 || !(r > 0)) return 0;
-  const Vec2c d = inc[1] - inc[0];
-  const Calc rise = d.dot(f.normal);
-  if (rise == 0) return 0;  // parallel to the face
-  const Calc len = norm_of(d);
-  const Vec2c tangent(-f.normal.y(), f.normal.x());
-  const Calc tu = d.dot(tangent) / len, ts = rise / len, ux = (x - inc[0]).dot(tangent);
-  const Calc l = tu == 0 ? (ts > 0 ? Calc(0) : len) : std::clamp((ux + (tu > 0 ? -r : r) * ts) / tu, Calc(0), len);
-  const Calc k = std::min(std::fabs(l * tu - ux) / r, Calc(1));  // r^2 - z^2 = r^2 (1 - k)(1 + k), unsquared
-  const Calc lowest = l * ts - r * std::sqrt((1 - k) * (1 + k));
-  return std::max(Calc(0), (x - inc[0]).dot(f.normal) - r - lowest);
-}
+/// How much further toward the reference face than a clipped end's own circle the incident
+/// shape reaches at the end's place along the face: 0 except for a segment with a radius tilted
+/// to the face, whose points nearer the face have circles reaching below the end's. In
+/// coordinates along the face (u) and the normal (s) from the segment's first end, the circle of
+/// the segment's point at length l reaches down to l t_s - sqrt(r^2 - (l t_u - u_x)^2) at u_x,
+/// (t_u, t_s) the segment's unit direction: least at l t_u - u_x = -r t_s sign(t_u), clamped to
+/// the segment. The segment's terms are the same for both ends, so they are computed once.
+class IncidentSink {
+ public:
+  explicit IncidentSink(const ReferenceFace& f) noexcept : f_(f) {
+    const Core& inc = *f.inc;
+    r_ = inc.radius;
+    if (inc.size() != 2 || !(r_ > 0)) return;
+    const Vec2c d = inc[1] - inc[0];
+    const Calc rise = d.dot(f.normal);
+    if (rise == 0) return;  // parallel to the face
+    len_ = norm_of(d);
+    tangent_ = Vec2c(-f.normal.y(), f.normal.x());
+    tu_ = d.dot(tangent_) / len_;
+    ts_ = rise / len_;
+    tilted_ = true;
+  }
+  /// The sink at the clipped end x.
+  Calc at(const Vec2c& x) const noexcept {
+    if (!tilted_) return 0;
+    const Vec2c& o = (*f_.inc)[0];
+    const Calc ux = (x - o).dot(tangent_);
+    const Calc l =
+        tu_ == 0 ? (ts_ > 0 ? Calc(0) : len_) : std::clamp((ux + (tu_ > 0 ? -r_ : r_) * ts_) / tu_, Calc(0), len_);
+    const Calc k = std::min(std::fabs(l * tu_ - ux) / r_, Calc(1));  // r^2 - z^2 = r^2 (1 - k)(1 + k), unsquared
+    const Calc lowest = l * ts_ - r_ * std::sqrt((1 - k) * (1 + k));
+    return std::max(Calc(0), (x - o).dot(f_.normal) - r_ - lowest);
+  }
+
+ private:
+  const ReferenceFace& f_;
+  Vec2c tangent_ = Vec2c::Zero();
+  Calc r_ = 0, len_ = 0, tu_ = 0, ts_ = 0;
+  bool tilted_ = false;
+};
 
 /// Step 5: the clipped ends within reach of the radii plus the speculative distance, each moved
 /// midway between the surfaces, with its separation (s - the radii). An end beyond reach by no
 /// more than the rounding of s is kept: an end exactly at reach (a segment lying on a face) must
 /// not come and go with the rounding as the pair moves. The end of a tilted segment with a radius
-/// is first lowered by incident_sink(), so that its surface point is the shape's there.
+/// is first lowered by IncidentSink, so that its surface point is the shape's there.
 inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFace& f, CoreContact& out,
                                      Calc speculative = 0) {
   const Calc ref_radius = f.ref->radius, inc_radius = f.inc->radius;
   const Calc reach = ref_radius + inc_radius + speculative;
   Calc band = -1;  // computed only for an end beyond reach
+  const IncidentSink sink(f);
   for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
-    const Vec2c end = face.ends[i] - f.normal * incident_sink(f, face.ends[i]);
+    const Vec2c end = face.ends[i] - f.normal * sink.at(face.ends[i]);
     const Calc s = (end - f.r1).dot(f.normal);
     if (s > reach) {
       if (band < 0) band = kOverlapErrorFactor * kUnitRoundoff * std::max(point_scale(*f.ref, *f.inc), reach);

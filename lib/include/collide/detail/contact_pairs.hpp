@@ -139,7 +139,10 @@ bool hull_of(const Obb<T>& s, Hull& h) {
 template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   if (s.size() > ConvexPolygon<T>::kInline) return false;
-  h.push_all(s.vertices());
+  for (const auto& v : s.vertices()) h.core.push(widen(v));
+  // The largest absolute coordinate of the vertices is that of a corner of their box.
+  const auto [lo, hi] = PolygonAccess::box(s);
+  h.scale = std::max(widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff());
   h.cached = PolygonAccess::normals(s);
   return true;
 }
@@ -148,8 +151,10 @@ bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
 /// numbers a segment's.
 template <Scalar T>
 bool hull_of(const Capsule<T>& s, Hull& h) {
-  h.core = core_of(s);
-  if (h.core.size() != 2) return false;
+  if (s.b() == s.a()) return false;
+  h.core.push(widen(s.a()));
+  h.core.push(widen(s.b()));
+  h.core.radius = s.radius();
   const Vec2c d = h.core[1] - h.core[0];
   const Vec2c n = unit_of(Vec2c(d.y(), -d.x()));
   h.own_normals[0] = n;
@@ -185,14 +190,16 @@ bool decide_exactly(const A& a, const B& b) {
 /// band: cores penetrating deeper than it along the least-penetration axis, or meeting under radii
 /// wider than it, overlap; cores apart by a gap beyond it do not (each with the exact cores within
 /// the band of the rounded ones). Otherwise, and for tiny pairs, the exact decision.
-/// p and q: the cores of a and b; np and nq: their faces' normals when known, else nullptr.
+/// p and q: the cores of a and b; np and nq: their faces' normals when known, else nullptr;
+/// points: point_scale(p, q).
 template <class A, class B>
 [[gnu::always_inline]] inline std::optional<CoreContact> contact_of_cores(const A& a, const B& b, const Core& p,
                                                                           const Vec2c* np, const Core& q,
-                                                                          const Vec2c* nq, Calc speculative) {
+                                                                          const Vec2c* nq, Calc points,
+                                                                          Calc speculative) {
   const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
                            !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
-  const Calc points = point_scale(p, q), radii = p.radius + q.radius, scale = std::max(points, radii);
+  const Calc radii = p.radius + q.radius, scale = std::max(points, radii);
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(p, q, speculative) : std::nullopt;
   };
@@ -240,7 +247,7 @@ template <class A, class B>
 template <class A, class B>
 std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
   const Core p = core_of(a), q = core_of(b);
-  return contact_of_cores(a, b, p, nullptr, q, nullptr, speculative);
+  return contact_of_cores(a, b, p, nullptr, q, nullptr, point_scale(p, q), speculative);
 }
 
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
@@ -662,7 +669,8 @@ template <class A, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_capsule_hull(const A& a, const B& b, Calc speculative) {
   Hull ha, hb;
   if (!(hull_of(a, ha) && hull_of(b, hb))) return contact_generic(a, b, speculative);
-  return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), speculative);
+  return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), std::max(ha.scale, hb.scale),
+                          speculative);
 }
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
