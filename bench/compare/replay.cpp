@@ -1,0 +1,103 @@
+// One side of bench/compare/compare_headers.py: the pairs of bodies whose bounding boxes overlap
+// in frames 30-39 of the game loop (bench/game_loop.cpp's scene and motion; a tree built each
+// frame), grouped by kind pair, and the time of one pass of contact() over each group. Compiled
+// twice, against two versions of the library's headers, with the library's namespace renamed
+// (-Dcollide=...) so that both live in one process; COMPARE_SIDE names this side's entry points.
+
+#include "../game_loop.cpp"
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifndef COMPARE_SIDE
+#error "COMPARE_SIDE must name this side (old or new)"
+#endif
+#define COMPARE_JOIN2(a, b) a##_##b
+#define COMPARE_JOIN(a, b) COMPARE_JOIN2(a, b)
+#define COMPARE_ENTRY(name) COMPARE_JOIN(name, COMPARE_SIDE)
+
+namespace {
+
+struct Placed {
+  std::uint32_t a, b;  // a's kind <= b's kind
+  collide::Transform<float> xa, xb;
+};
+
+struct Replay {
+  std::shared_ptr<bench::Scene> scene;
+  std::vector<std::pair<std::string, std::vector<Placed>>> groups;  // registry order of kind pairs
+};
+
+const Replay& replay(std::size_t bodies) {
+  static const Replay r = [bodies] {
+    using namespace bench;
+    Replay out;
+    out.scene = make_scene(bodies);
+    const Scene& s = *out.scene;
+    std::vector<V> p = s.position, v = s.velocity;
+    std::vector<float> angle = s.angle;
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<Placed>> by_kinds;
+    for (int frame = 0; frame < 40; ++frame) {
+      advance(p, v, angle, s);
+      if (frame < 30) continue;
+      Tree tree(0.1f);
+      std::vector<collide::Transform<float>> xf(bodies);
+      for (std::size_t i = 0; i < bodies; ++i) {
+        xf[i] = *collide::Transform<float>::make(p[i], angle[i]);
+        tree.add(collide::bounds(s.shapes[i], xf[i]), i);
+      }
+      tree.for_each_pair([&](bp::ProxyId x, bp::ProxyId y) {
+        auto i = std::uint32_t(tree.user_data(x)), j = std::uint32_t(tree.user_data(y));
+        if (s.shapes[j].index() < s.shapes[i].index()) std::swap(i, j);
+        by_kinds[{s.shapes[i].index(), s.shapes[j].index()}].push_back({i, j, xf[i], xf[j]});
+      });
+    }
+    for (auto& [kinds, pairs] : by_kinds) {
+      const auto ka = collide::ShapeKind(kinds.first), kb = collide::ShapeKind(kinds.second);
+      std::string name(collide::name(ka));
+      name.append("-").append(collide::name(kb));
+      out.groups.emplace_back(std::move(name), std::move(pairs));
+    }
+    return out;
+  }();
+  return r;
+}
+
+}  // namespace
+
+/// The number of kind pairs among the candidate pairs.
+extern "C" std::size_t COMPARE_ENTRY(group_count)(std::size_t bodies) {
+  return replay(bodies).groups.size();
+}
+/// Kind pair g's name ("circle-obb") and its number of pairs.
+extern "C" const char* COMPARE_ENTRY(group_name)(std::size_t bodies, std::size_t g, std::size_t* pairs) {
+  const auto& group = replay(bodies).groups[g];
+  *pairs = group.second.size();
+  return group.first.c_str();
+}
+/// Nanoseconds of one pass of contact() over kind pair g; *points: the points found.
+extern "C" double COMPARE_ENTRY(time_group)(std::size_t bodies, std::size_t g, long* points) {
+  const Replay& r = replay(bodies);
+  const auto& shapes = r.scene->shapes;
+  const std::vector<Placed>& pairs = r.groups[g].second;
+  long found = 0;
+  const auto start = std::chrono::steady_clock::now();
+  std::visit(
+      [&](const auto& a0, const auto& b0) {
+        using A = std::remove_cvref_t<decltype(a0)>;
+        using B = std::remove_cvref_t<decltype(b0)>;
+        for (const Placed& q : pairs) {
+          if (const auto c = collide::contact(*std::get_if<A>(&shapes[q.a]), q.xa, *std::get_if<B>(&shapes[q.b]), q.xb))
+            found += c->count;
+        }
+      },
+      shapes[pairs.front().a], shapes[pairs.front().b]);
+  const auto stop = std::chrono::steady_clock::now();
+  *points = found;
+  return std::chrono::duration<double, std::nano>(stop - start).count();
+}
