@@ -33,6 +33,7 @@ struct Replay {
   std::vector<std::pair<std::string, std::vector<Placed>>> groups;  // registry order of kind pairs
 };
 
+/// The replay of a scene of `bodies` bodies, built at the first call (every call asks for the same).
 const Replay& replay(std::size_t bodies) {
   static const Replay r = [bodies] {
     using namespace bench;
