@@ -46,16 +46,8 @@ struct ShapeAccess {
     poly.size_ = n;
     if (n > ConvexPolygon<T>::kInline) poly.heap_.resize(n);
     Vec2<T>* out = n > ConvexPolygon<T>::kInline ? poly.heap_.data() : poly.inline_.data();
-    Vec2<T> lo = at(0), hi = lo;
-    out[0] = lo;
-    for (std::size_t k = 1; k < n; ++k) {
-      const Vec2<T> v = at(k);
-      out[k] = v;
-      lo = lo.cwiseMin(v);
-      hi = hi.cwiseMax(v);
-    }
-    poly.lo_ = lo;
-    poly.hi_ = hi;
+    for (std::size_t k = 0; k < n; ++k) out[k] = at(k);
+    poly.cache_box();
     return poly;
   }
   /// Caches normal(k) as edge k's unit outward normal (a polygon of at most kInline vertices).
