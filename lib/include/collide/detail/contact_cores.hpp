@@ -242,7 +242,10 @@ inline FeatureId face_point_id(const ReferenceFace& f, unsigned v) noexcept {
 /// coordinates along the face (u) and the normal (s) from the segment's first end, the circle of
 /// the segment's point at length l reaches down to l t_s - sqrt(r^2 - (l t_u - u_x)^2) at u_x,
 /// (t_u, t_s) the segment's unit direction: least at l t_u - u_x = -r t_s sign(t_u), clamped to
-/// the segment. The segment's terms are the same for both ends, so they are computed once.
+/// the segment. Unclamped, that is the straight side of the shape, u_x t_s / t_u - r / |t_u|,
+/// taken without a square root where the segment lies within 60 degrees of the face (|t_u| >=
+/// 1/2, so that neither term is large); at the segment's end nearer the face it is that end's own
+/// circle (0). The segment's terms are the same for both ends, so they are computed once.
 class IncidentSink {
  public:
   explicit IncidentSink(const ReferenceFace& f) noexcept : f_(f) {
@@ -256,25 +259,36 @@ class IncidentSink {
     tangent_ = Vec2c(-f.normal.y(), f.normal.x());
     tu_ = d.dot(tangent_) / len_;
     ts_ = rise / len_;
+    lower_ = rise > 0 ? 0 : 1;
+    if (std::fabs(tu_) >= 0.5) {
+      const Calc inv = 1 / tu_;
+      slope_ = ts_ * inv;
+      secant_ = std::fabs(inv);
+      straight_ = true;
+    }
     tilted_ = true;
   }
   /// The sink at the clipped end x.
   Calc at(const Vec2c& x) const noexcept {
-    if (!tilted_) return 0;
+    if (!tilted_ || x == (*f_.inc)[lower_]) return 0;
     const Vec2c& o = (*f_.inc)[0];
-    const Calc ux = (x - o).dot(tangent_);
-    const Calc l =
-        tu_ == 0 ? (ts_ > 0 ? Calc(0) : len_) : std::clamp((ux + (tu_ > 0 ? -r_ : r_) * ts_) / tu_, Calc(0), len_);
+    const Vec2c xo = x - o;
+    const Calc ux = xo.dot(tangent_);
+    const Calc lift = ux + (tu_ > 0 ? -r_ : r_) * ts_;  // l t_u
+    if (straight_ && (tu_ > 0 ? lift > 0 && lift < len_ * tu_ : lift < 0 && lift > len_ * tu_))
+      return std::max(Calc(0), xo.dot(f_.normal) - r_ - (ux * slope_ - r_ * secant_));
+    const Calc l = tu_ == 0 ? (ts_ > 0 ? Calc(0) : len_) : std::clamp(lift / tu_, Calc(0), len_);
     const Calc k = std::min(std::fabs(l * tu_ - ux) / r_, Calc(1));  // r^2 - z^2 = r^2 (1 - k)(1 + k), unsquared
     const Calc lowest = l * ts_ - r_ * std::sqrt((1 - k) * (1 + k));
-    return std::max(Calc(0), (x - o).dot(f_.normal) - r_ - lowest);
+    return std::max(Calc(0), xo.dot(f_.normal) - r_ - lowest);
   }
 
  private:
   const ReferenceFace& f_;
   Vec2c tangent_ = Vec2c::Zero();
-  Calc r_ = 0, len_ = 0, tu_ = 0, ts_ = 0;
-  bool tilted_ = false;
+  Calc r_ = 0, len_ = 0, tu_ = 0, ts_ = 0, slope_ = 0, secant_ = 0;
+  std::size_t lower_ = 0;  // the end nearer the face
+  bool tilted_ = false, straight_ = false;
 };
 
 /// Step 5: the clipped ends within reach of the radii plus the speculative distance, each moved

@@ -192,11 +192,11 @@ bool decide_exactly(const A& a, const B& b) {
 /// the band of the rounded ones). Otherwise, and for tiny pairs, the exact decision.
 /// p and q: the cores of a and b; np and nq: their faces' normals when known, else nullptr;
 /// points: point_scale(p, q).
-template <class A, class B>
+template <class A, class B, class Search>
 [[gnu::always_inline]] inline std::optional<CoreContact> contact_of_cores(const A& a, const B& b, const Core& p,
                                                                           const Vec2c* np, const Core& q,
                                                                           const Vec2c* nq, Calc points,
-                                                                          Calc speculative) {
+                                                                          Calc speculative, Search&& search) {
   const bool radius_free = !std::is_same_v<A, Circle<scalar_of_t<A>>> && !std::is_same_v<A, Capsule<scalar_of_t<A>>> &&
                            !std::is_same_v<B, Capsule<scalar_of_t<A>>>;
   const Calc radii = p.radius + q.radius, scale = std::max(points, radii);
@@ -213,9 +213,7 @@ template <class A, class B>
   // meeting at once, and a face separating them by more than the band ends the search; a point
   // or a segment against a point or a segment has no such faces, and their test is cheap.
   const bool polygon = std::max(p.size(), q.size()) > 2;
-  const auto axis = [&](Calc stop_below) {
-    return least_penetration_with(p, faces_of(p, np), q, faces_of(q, nq), tie, stop_below);
-  };
+  const auto axis = [&](Calc stop_below) { return search(tie, stop_below); };
   const auto contact_on = [&](const Axis& found) { return contact_from_axis(p, q, found, speculative, np, nq); };
   const Axis ax = polygon ? axis(radii - band) : Axis{};
   const Calc core_depth = ax.depth - radii;  // within 2 ties of the cores' least penetration
@@ -241,6 +239,15 @@ template <class A, class B>
     if (const std::optional<CoreContact> c = contact_from_closest(p, q, cl, speculative, np, nq)) return c;
   }
   return contact_on(axis(-std::numeric_limits<Calc>::infinity()));
+}
+
+/// contact_of_cores() with the least-penetration axis over both cores' faces (least_penetration_with()).
+template <class A, class B>
+std::optional<CoreContact> contact_of_cores(const A& a, const B& b, const Core& p, const Vec2c* np, const Core& q,
+                                            const Vec2c* nq, Calc points, Calc speculative) {
+  return contact_of_cores(a, b, p, np, q, nq, points, speculative, [&](Calc tie, Calc stop_below) {
+    return least_penetration_with(p, faces_of(p, np), q, faces_of(q, nq), tie, stop_below);
+  });
 }
 
 /// The contact of two primitives without a specialisation (contact_of_cores() on their cores).
@@ -632,6 +639,29 @@ Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hu
       [&](const Vec2c&, unsigned i) { return dq[i]; }, Calc(0), tie, stop_below);
 }
 
+/// The least-penetration axis of a box (hull hb) and a polygon (hull hp), as
+/// least_penetration_with() finds it, bit for bit: the box's faces, -v, u, v, -u, take the least
+/// and the largest of one pass of the polygon's vertices along u and along v instead of four.
+inline Axis least_penetration_of_box_polygon(const Hull& hb, const Hull& hp, Calc tie, Calc stop_below) {
+  const Core &p = hb.core, &q = hp.core;
+  const Calc r = p.radius + q.radius;
+  const Vec2c* nb = hb.normals();  // faces 0..3: -v, u, v, -u (hull_of)
+  const Vec2c u = nb[1], v = nb[2];
+  Calc ulo = std::numeric_limits<Calc>::infinity(), uhi = -ulo, vlo = ulo, vhi = -ulo;
+  for (const Vec2c& x : q.pts()) {
+    const Calc su = x.dot(u), sv = x.dot(v);
+    ulo = std::min(ulo, su);
+    uhi = std::max(uhi, su);
+    vlo = std::min(vlo, sv);
+    vhi = std::max(vhi, sv);
+  }
+  const std::array<Calc, 4> dp{p[0].dot(nb[0]) + vhi + r, p[1].dot(u) - ulo + r, p[2].dot(v) - vlo + r,
+                               p[3].dot(nb[3]) + uhi + r};
+  return least_penetration_by(
+      faces_of(hb), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
+      [&](const Vec2c& m, unsigned i) { return q[i].dot(m) + support(p, -m) + r; }, r, tie, stop_below);
+}
+
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
 /// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
@@ -647,6 +677,8 @@ template <class A, class B>
   Axis ax;
   if constexpr (is_box_v<A> && is_box_v<B>) {
     ax = least_penetration_of_boxes(a, b, ha, hb, tie, -band);
+  } else if constexpr (is_box_v<A>) {
+    ax = least_penetration_of_box_polygon(ha, hb, tie, -band);
   } else {
     ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
   }
@@ -662,6 +694,50 @@ inline constexpr bool is_hull_kind_v =
     std::is_same_v<S, Aabb<scalar_of_t<S>>> || std::is_same_v<S, Obb<scalar_of_t<S>>> ||
     std::is_same_v<S, ConvexPolygon<scalar_of_t<S>>>;
 
+/// The least-penetration axis of a box (shape a, hull ha) and a capsule (hull hc), each face's
+/// depth in closed form as least_penetration_of_boxes() takes it: along a unit n the box spans
+/// c . n -+ (X |u . n| + Y |v . n|), the capsule's core the least and the largest of its ends'
+/// dots. The box's four faces share four dots of the ends; the capsule's two sides, one box
+/// half-width.
+template <class A>
+Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc, Calc tie, Calc stop_below) {
+  Rect k;
+  rect_of(a, k);
+  const Vec2c u = ha.normals()[1], v = perp(u);             // faces 0..3: -v, u, v, -u (hull_of)
+  const Calc x = k.hx * k.w.dot(u), y = k.hy * k.w.dot(u);  // w . u = |w|
+  const Vec2c &e0 = hc.core[0], &e1 = hc.core[1];
+  const Calc r = hc.core.radius;
+  const Calc cu = k.c.dot(u), cv = k.c.dot(v);
+  const Calc au = e0.dot(u), bu = e1.dot(u), av = e0.dot(v), bv = e1.dot(v);
+  const std::array<Calc, 4> dp{y - cv + std::max(av, bv) + r, x + cu - std::min(au, bu) + r,
+                               y + cv - std::min(av, bv) + r, x - cu + std::max(au, bu) + r};
+  const Vec2c n = hc.normals()[0];  // side 1's is -n
+  const Calc cn = k.c.dot(n), ext = x * std::fabs(u.dot(n)) + y * std::fabs(v.dot(n));
+  const std::array<Calc, 2> dq{ext - cn + e0.dot(n) + r, ext + cn - e1.dot(n) + r};
+  return least_penetration_by(
+      faces_of(ha), faces_of(hc), [&](const Vec2c&, unsigned i) { return dp[i]; },
+      [&](const Vec2c&, unsigned i) { return dq[i]; }, r, tie, stop_below);
+}
+
+/// The least-penetration axis of a capsule (hull hc) and a polygon (hull hp), as
+/// least_penetration_with() finds it, bit for bit: the capsule's two sides, n and -n, take the
+/// least and the largest of one pass of the polygon's vertices along n instead of two.
+inline Axis least_penetration_of_capsule_polygon(const Hull& hc, const Hull& hp, Calc tie, Calc stop_below) {
+  const Core &p = hc.core, &q = hp.core;
+  const Calc r = p.radius + q.radius;
+  const Vec2c n = hc.normals()[0];  // side 1's is -n
+  Calc lo = std::numeric_limits<Calc>::infinity(), hi = -lo;
+  for (const Vec2c& x : q.pts()) {
+    const Calc s = x.dot(n);
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  const std::array<Calc, 2> dp{p[0].dot(n) - lo + r, p[1].dot(hc.normals()[1]) + hi + r};
+  return least_penetration_by(
+      faces_of(hc), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
+      [&](const Vec2c& m, unsigned i) { return q[i].dot(m) + support(p, -m) + r; }, r, tie, stop_below);
+}
+
 /// A capsule and a box or polygon: contact_of_cores() with the faces' normals known (the
 /// capsule's sides by one square root, the box's from its axes, the polygon's cached). Kept out of
 /// line, as the other specialised pairs are: the dispatch inlines into the caller.
@@ -669,8 +745,16 @@ template <class A, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_capsule_hull(const A& a, const B& b, Calc speculative) {
   Hull ha, hb;
   if (!(hull_of(a, ha) && hull_of(b, hb))) return contact_generic(a, b, speculative);
-  return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), std::max(ha.scale, hb.scale),
-                          speculative);
+  const Calc points = std::max(ha.scale, hb.scale);
+  if constexpr (is_box_v<A>) {
+    return contact_of_cores(
+        a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
+        [&](Calc tie, Calc stop_below) { return least_penetration_of_box_capsule(a, ha, hb, tie, stop_below); });
+  } else {
+    return contact_of_cores(
+        a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
+        [&](Calc tie, Calc stop_below) { return least_penetration_of_capsule_polygon(ha, hb, tie, stop_below); });
+  }
 }
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
