@@ -180,13 +180,7 @@ bool check_point_separation(Judgement& j, const Shape<T>& a, const Shape<T>& b, 
   const Placed<T>* prims[2] = {pa, pb};
   for (int k = 0; k < 2; ++k) {
     const oracle::Placed p = oracle::placed(prims[k]->shape, prims[k]->transform);
-    // A sharp surface passes through its surface point; a rounded one at least reaches it (its
-    // surface at a tilted clipped face lies nearer than along the normal).
-    const bool ok = detail::is_rounded(prims[k]->shape)
-                        ? oracle::contains(p, x[std::size_t(k)]) ||
-                              oracle::compare_boundary_distance(p, x[std::size_t(k)], bound) <= 0
-                        : detail::near_boundary(p, x[std::size_t(k)], bound);
-    if (!ok) {
+    if (!detail::near_boundary(p, x[std::size_t(k)], bound)) {
       return !j.broken("point " + std::to_string(i) + ": " + (k == 0 ? "a" : "b") + "'s surface point " +
                            (k == 0 ? "p - n s/2" : "p + n s/2") + " within " + num(bound) + " of its boundary",
                        "point " + vec(c.points[std::size_t(i)]) + ", separation " + num(s) + ", normal " +

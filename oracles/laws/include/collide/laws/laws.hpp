@@ -289,8 +289,7 @@ Verdict transform_rejection(std::span<const T> values);
 /// Law separation. Every point of contact(a, b) has a finite separation s <= bound (no speculative
 /// distance: penetrating or touching), and its surface points lie where s says: a's at
 /// p - normal s / 2 and b's at p + normal s / 2 each within the bound of that shape's boundary
-/// (oracle::compare_boundary_distance; a circle or capsule only needs to reach the point, since
-/// its surface at a tilted clipped face lies nearer than along the normal); and no point is deeper
+/// (oracle::compare_boundary_distance), rounded shapes as well as sharp ones; and no point is deeper
 /// than the exact depth of its pair (oracle::compare_depth) by more than the bound. For compounds
 /// the pair is the children the point's id names.
 template <Scalar T>
