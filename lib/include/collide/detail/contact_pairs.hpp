@@ -527,10 +527,6 @@ bool rect_of(const Obb<T>& s, Rect& k) {
   return hmin > kThinBoxRatio * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > kUnderflowMargin;
 }
 
-/// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
-/// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
-/// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
-/// is not proper (see rect_of) takes the generic path unless the centre is clearly beyond a face.
 /// The rounding scale of a circle (centre c, radius r) and a box: their largest coordinate.
 inline Calc rect_scale(const Vec2c& c, Calc r, const Rect& k) noexcept {
   return std::max(
@@ -549,25 +545,34 @@ inline bool circle_beyond_rect(const Vec2c& c, Calc r, const Rect& k, Calc specu
   return std::max(std::fabs(sw) - k.hx * ww, std::fabs(tw) - k.hy * ww) > reach * std::max(ww, Calc(1));
 }
 
+/// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
+/// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
+/// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
+/// is not proper (see rect_of) takes the generic path unless the centre is clearly beyond a face.
 /// scale: rect_scale() of the pair, which the caller found not apart by circle_beyond_rect() when
 /// at least kTinyCore. Kept out of line, so that that test inlines into the caller.
 template <Scalar T, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k,
-                                                                 bool proper, Calc scale, Calc speculative) {
+                                                                 Calc scale, Calc speculative) {
   const Vec2c c = widen(a.center());
   const Calc r = a.radius();
-  if (!(scale >= kTinyCore) || !proper) return contact_generic(a, b, speculative);
+  // Whether the box is proper is asked here, out of line, so that the test for apart pairs before
+  // the call does not compute it.
+  Rect same;
+  if (!(scale >= kTinyCore) || !rect_of(b, same)) return contact_generic(a, b, speculative);
   const Calc band = band_of(scale);
-  const Vec2c v = perp(k.w), d = c - k.c;
-  const Calc ww = k.w.squaredNorm(), len = std::sqrt(ww);
-  const Calc sw = d.dot(k.w), tw = d.dot(v);
+  // An AABB's axis is (1, 0) exactly: its divisions and square root fold away.
+  constexpr bool aligned = std::is_same_v<B, Aabb<T>>;
+  const Vec2c w = aligned ? Vec2c(1, 0) : k.w, v = perp(w), d = c - k.c;
+  const Calc ww = aligned ? Calc(1) : w.squaredNorm(), len = aligned ? Calc(1) : std::sqrt(ww);
+  const Calc sw = d.dot(w), tw = d.dot(v);
   const Calc s = sw / ww, t = tw / ww;
   const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
   CoreContact out;
   out.count = 1;
   if (ex > 0 && ey > 0) {
     const Calc cs = std::clamp(s, -k.hx, k.hx), ct = std::clamp(t, -k.hy, k.hy);
-    const Vec2c q = k.c + k.w * cs + v * ct;
+    const Vec2c q = k.c + w * cs + v * ct;
     const Vec2c dq = q - c;
     const Calc dist = norm_of(dq), gap = dist - r;
     out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
@@ -600,7 +605,7 @@ template <Scalar T, class B>
   const bool along_w = std::max(ex, ey) > 0 ? ex >= ey : ex >= ey - tie;
   const bool positive = along_w ? s > tie : t > tie;
   const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
-  const Vec2c n_face = (along_w ? k.w : v) * ((positive ? 1 : -1) / len);
+  const Vec2c n_face = (along_w ? w : v) * ((positive ? 1 : -1) / len);
   const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
   out.separations[0] = out.overlapping ? e - r : std::max(e - r, Calc(0));
@@ -766,11 +771,11 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
       // Boxes flat on an axis or thinner than their rounding take the generic path.
       Rect k;
-      const bool proper = rect_of(b, k);
+      rect_of(b, k);
       const Vec2c c = widen(a.center());
       const Calc scale = rect_scale(c, a.radius(), k);
       if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
-      return contact_circle_rect(a, b, k, proper, scale, speculative);
+      return contact_circle_rect(a, b, k, scale, speculative);
     } else if constexpr (circle_a) {
       if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
       if (b.size() <= ConvexPolygon<scalar_of_t<A>>::kInline) return contact_circle_polygon(a, b, speculative);
