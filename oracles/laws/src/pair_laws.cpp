@@ -548,14 +548,9 @@ Verdict contact_law(const Shape<T>& a, const Shape<T>& b) {
     // between the surfaces, while a point on one face of a deep contact lies a full depth from
     // the other surface. Judged where "midway between the surfaces" has one meaning: two
     // primitives with interiors that overlap without either containing the other (concentric
-    // circles have no such point, a segment no interior), and whose surfaces are faces (no
-    // radius) or round about disjoint cores; a rounded face clipped at a tilt is not judged
-    // (its surface is nearer than along the normal, by up to the depth).
+    // circles have no such point, a segment no interior).
     const bool judged = v.relation == Relation::Overlapping && pa.size() == 1 && pb.size() == 1 &&
-                        detail::has_interior(ka[0].shape) && detail::has_interior(kb[0].shape) &&
-                        ((!detail::is_rounded(ka[0].shape) && !detail::is_rounded(kb[0].shape)) ||
-                         !oracle::overlaps(oracle::placed(detail::core_primitive(ka[0].shape), ka[0].transform),
-                                           oracle::placed(detail::core_primitive(kb[0].shape), kb[0].transform)));
+                        detail::has_interior(ka[0].shape) && detail::has_interior(kb[0].shape);
     if (!judged) {
       v.account += "; midway not judged (" + std::string(name(v.relation)) + ")";
       return;

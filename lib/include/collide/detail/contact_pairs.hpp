@@ -513,16 +513,24 @@ struct Rect {
   Vec2c c, w;
   Calc hx, hy;
 };
-/// Builds k from a box with interior whose corners keep their order when computed (see hull_of).
+/// The Rect of a box.
 template <Scalar T>
-bool rect_of(const Aabb<T>& s, Rect& k) {
+Rect rect_of(const Aabb<T>& s) noexcept {
   const Vec2c lo = widen(s.min()), hi = widen(s.max()), h = (hi - lo) * 0.5;
-  k = {(lo + hi) * 0.5, Vec2c(1, 0), h.x(), h.y()};
-  return lo.x() < hi.x() && lo.y() < hi.y();
+  return {(lo + hi) * 0.5, Vec2c(1, 0), h.x(), h.y()};
 }
 template <Scalar T>
-bool rect_of(const Obb<T>& s, Rect& k) {
-  k = {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
+Rect rect_of(const Obb<T>& s) noexcept {
+  return {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
+}
+/// Whether a box (k its rect_of()) is proper: it has an interior and its corners keep their order
+/// when computed (see hull_of).
+template <Scalar T>
+bool is_proper(const Aabb<T>& s, const Rect&) noexcept {
+  return s.min().x() < s.max().x() && s.min().y() < s.max().y();
+}
+template <Scalar T>
+bool is_proper(const Obb<T>&, const Rect& k) noexcept {
   const Calc hmin = std::min(k.hx, k.hy), hmax = std::max(k.hx, k.hy);
   return hmin > kThinBoxRatio * (k.c.cwiseAbs().maxCoeff() + hmax) && hmin > kUnderflowMargin;
 }
@@ -548,7 +556,7 @@ inline bool circle_beyond_rect(const Vec2c& c, Calc r, const Rect& k, Calc specu
 /// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
 /// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
 /// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
-/// is not proper (see rect_of) takes the generic path unless the centre is clearly beyond a face.
+/// is not proper (see is_proper) takes the generic path unless the centre is clearly beyond a face.
 /// scale: rect_scale() of the pair, which the caller found not apart by circle_beyond_rect() when
 /// at least kTinyCore. Kept out of line, so that that test inlines into the caller.
 template <Scalar T, class B>
@@ -558,8 +566,7 @@ template <Scalar T, class B>
   const Calc r = a.radius();
   // Whether the box is proper is asked here, out of line, so that the test for apart pairs before
   // the call does not compute it.
-  Rect same;
-  if (!(scale >= kTinyCore) || !rect_of(b, same)) return contact_generic(a, b, speculative);
+  if (!(scale >= kTinyCore) || !is_proper(b, k)) return contact_generic(a, b, speculative);
   const Calc band = band_of(scale);
   // An AABB's axis is (1, 0) exactly: its divisions and square root fold away.
   constexpr bool aligned = std::is_same_v<B, Aabb<T>>;
@@ -625,9 +632,7 @@ inline constexpr bool is_box_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std:
 /// products in all, where the supports take one per corner and face.
 template <class A, class B>
 Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hull& hb, Calc tie, Calc stop_below) {
-  Rect ka, kb;
-  rect_of(a, ka);
-  rect_of(b, kb);
+  const Rect ka = rect_of(a), kb = rect_of(b);
   const Vec2c ua = ha.normals()[1], ub = hb.normals()[1];           // faces 0..3: -v, u, v, -u (hull_of)
   const Calc xa = ka.hx * ka.w.dot(ua), ya = ka.hy * ka.w.dot(ua);  // w . u = |w|
   const Calc xb = kb.hx * kb.w.dot(ub), yb = kb.hy * kb.w.dot(ub);
@@ -706,8 +711,7 @@ inline constexpr bool is_hull_kind_v =
 /// half-width.
 template <class A>
 Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc, Calc tie, Calc stop_below) {
-  Rect k;
-  rect_of(a, k);
+  const Rect k = rect_of(a);
   const Vec2c u = ha.normals()[1], v = perp(u);             // faces 0..3: -v, u, v, -u (hull_of)
   const Calc x = k.hx * k.w.dot(u), y = k.hy * k.w.dot(u);  // w . u = |w|
   const Vec2c &e0 = hc.core[0], &e1 = hc.core[1];
@@ -770,8 +774,7 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
   if constexpr ((circle_a || is_hull_kind_v<A>)&&is_hull_kind_v<B>) {
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
       // Boxes flat on an axis or thinner than their rounding take the generic path.
-      Rect k;
-      rect_of(b, k);
+      const Rect k = rect_of(b);
       const Vec2c c = widen(a.center());
       const Calc scale = rect_scale(c, a.radius(), k);
       if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;

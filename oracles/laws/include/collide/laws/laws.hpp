@@ -121,9 +121,8 @@ Verdict representation(const Shape<T>& a, const Shape<T>& x);
 /// each contact point lies within depth + 4 tolerances of both shapes. Direction: moving a by
 /// -normal * (depth + 2 bounds) separates it from b (oracle::separates; for compounds, some
 /// overlapping child pair). Midway, for two primitives with interiors that overlap without
-/// containment, both without radius or with disjoint cores: each point lies within 3/4 depth +
-/// 2 bounds of both boundaries (the middle half between the surfaces), so a point on one shape's
-/// face of a deep contact fails.
+/// containment: each point lies within 3/4 depth + 2 bounds of both boundaries (the middle half
+/// between the surfaces), so a point on one shape's face of a deep contact fails.
 /// bound = 4 rounding tolerances + T's rounding of depth and points.
 template <Scalar T>
 Verdict contact_law(const Shape<T>& a, const Shape<T>& b);
