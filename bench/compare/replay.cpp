@@ -3,6 +3,8 @@
 // frame), grouped by kind pair, and the time of one pass of contact() over each group. Compiled
 // twice, against two versions of the library's headers, with the library's namespace renamed
 // (-Dcollide=...) so that both live in one process; COMPARE_SIDE names this side's entry points.
+// time_box2d() times Box2D 2.4.1's b2Collide* on the same pairs and poses, as the game loop calls
+// them (main.cpp built with COMPARE_BOX2D).
 
 #include "../game_loop.cpp"
 
@@ -98,6 +100,36 @@ extern "C" double COMPARE_ENTRY(time_group)(std::size_t bodies, std::size_t g, l
         }
       },
       shapes[pairs.front().a], shapes[pairs.front().b]);
+  const auto stop = std::chrono::steady_clock::now();
+  *points = found;
+  return std::chrono::duration<double, std::nano>(stop - start).count();
+}
+
+/// Nanoseconds of one pass of Box2D 2.4.1's b2Collide* over kind pair g, each pair under the same
+/// poses as contact()'s (the rotation's stored cosine and sine); *points: the points found.
+extern "C" double COMPARE_ENTRY(time_box2d)(std::size_t bodies, std::size_t g, long* points) {
+  const Replay& r = replay(bodies);
+  const std::vector<Placed>& pairs = r.groups[g].second;
+  static std::vector<std::vector<std::pair<b2Transform, b2Transform>>> poses;  // per group, built once
+  if (poses.size() < r.groups.size()) poses.resize(r.groups.size());
+  if (poses[g].empty()) {
+    const auto to_b2_pose = [](const collide::Transform<float>& x) {
+      b2Transform out;
+      out.p.Set(x.position().x(), x.position().y());
+      out.q.c = x.rotation().x();
+      out.q.s = x.rotation().y();
+      return out;
+    };
+    for (const Placed& q : pairs) poses[g].emplace_back(to_b2_pose(q.xa), to_b2_pose(q.xb));
+  }
+  const auto& shapes = r.scene->b2shapes;
+  long found = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    b2Manifold m;
+    bench::collide_b2(m, shapes[pairs[k].a].get(), poses[g][k].first, shapes[pairs[k].b].get(), poses[g][k].second);
+    found += m.pointCount;
+  }
   const auto stop = std::chrono::steady_clock::now();
   *points = found;
   return std::chrono::duration<double, std::nano>(stop - start).count();
