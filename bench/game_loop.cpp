@@ -12,7 +12,9 @@
 // b2Shape with b2Transform, b2DynamicTree, b2Collide* (polygon skin radius 0, capsules as 2-gons
 // with a radius, as Box2D v3 treats them). The motion itself (integration, bouncing off the
 // walls) is outside the timed phases. Counters: milliseconds of this thread's CPU time per frame
-// of each phase.
+// of each phase. Box2D's b2Collide* return local manifolds; its loop also times, outside the frame,
+// a second narrowphase that turns each manifold with points into world points, normal and
+// separations (b2WorldManifold::Initialize), which contact() returns (narrowphase_world_ms).
 
 #include "collide/broadphase.hpp"
 #include "collide/collide.hpp"
@@ -166,6 +168,7 @@ Broadphase make_broadphase() {
 /// Per-frame milliseconds of each phase, and what the loop found (for the cross-check).
 struct Timings {
   double transforms = 0, broadphase = 0, narrowphase = 0;
+  double narrowphase_world = 0;  ///< Box2D only: b2Collide* and b2WorldManifold::Initialize, not in the frame
   std::size_t candidates = 0, contacts = 0, points = 0;
 };
 
@@ -292,9 +295,22 @@ Timings run_box2d(const Scene& s, int frames = kFrames) {
       }
     }
     const auto t3 = Clock::now();
+    // The same pairs again, each manifold with points also turned into world points, normal and
+    // separations (what contact() returns, and what Box2D's solver computes for each contact).
+    for (const auto& [i, j] : pairs) {
+      b2Manifold m;
+      collide_b2(m, s.b2shapes[i].get(), xf[i], s.b2shapes[j].get(), xf[j]);
+      if (m.pointCount > 0) {
+        b2WorldManifold w;
+        w.Initialize(&m, xf[i], s.b2shapes[i]->m_radius, xf[j], s.b2shapes[j]->m_radius);
+        benchmark::DoNotOptimize(w);
+      }
+    }
+    const auto t4 = Clock::now();
     t.transforms += ms(t0, t1);
     t.broadphase += ms(t1, t2);
     t.narrowphase += ms(t2, t3);
+    t.narrowphase_world += ms(t3, t4);
     t.candidates += pairs.size();
   }
   return t;
@@ -304,6 +320,7 @@ void report(benchmark::State& state, const Timings& t) {
   state.counters["transforms_ms"] = t.transforms / kFrames;
   state.counters["broadphase_ms"] = t.broadphase / kFrames;
   state.counters["narrowphase_ms"] = t.narrowphase / kFrames;
+  if (t.narrowphase_world > 0) state.counters["narrowphase_world_ms"] = t.narrowphase_world / kFrames;
   state.counters["frame_ms"] = (t.transforms + t.broadphase + t.narrowphase) / kFrames;
   state.counters["contacts_per_frame"] = double(t.contacts) / kFrames;
   state.counters["points_per_frame"] = double(t.points) / kFrames;

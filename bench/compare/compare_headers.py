@@ -12,10 +12,12 @@ kind pair (where the compiler places the code) and about 1 % over all.
 
 With --box2d instead of OLD, the same pairs are timed against Box2D 2.4.1's b2Collide* (as the
 game loop calls them, under the same poses): collide / Box2D per kind pair, which says where the
-game loop's narrowphase spends more than Box2D's.
+game loop's narrowphase spends more than Box2D's. With --world as well, each Box2D manifold with
+points is also turned into world points, normal and separations (b2WorldManifold::Initialize), the
+values contact() returns, so both sides compute the same kind of answer.
 
 Usage: bench/compare/compare_headers.py OLD [--new NEW] [--runs N] [--reps R] [--bodies B]
-       bench/compare/compare_headers.py --box2d [--new NEW] [--runs N] [--reps R] [--bodies B]
+       bench/compare/compare_headers.py --box2d [--world] [--new NEW] [--runs N] [--reps R] [--bodies B]
   OLD, NEW: git revisions whose lib/include is compared (NEW: the working tree's lib/include).
 Needs g++ (or $CXX), Eigen, Box2D 2.4.1 and Google Benchmark, as collide_bench does.
 """
@@ -48,6 +50,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("old", nargs="?")
     ap.add_argument("--box2d", action="store_true", help="compare the new headers with Box2D 2.4.1 instead of OLD")
+    ap.add_argument("--world", action="store_true",
+                    help="with --box2d: Box2D's manifolds also turned into world values")
     ap.add_argument("--new", help="revision of the new headers (default: the working tree)")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--reps", type=int, default=200)
@@ -55,6 +59,8 @@ def main():
     args = ap.parse_args()
     if (args.old is None) == (not args.box2d):
         ap.error("give either OLD or --box2d")
+    if args.world and not args.box2d:
+        ap.error("--world needs --box2d")
     cxx = os.environ.get("CXX", "g++")
     with tempfile.TemporaryDirectory(prefix="collide-compare-") as tmp:
         new_inc = os.path.join(ROOT, "lib", "include")
@@ -68,11 +74,14 @@ def main():
         if any(j.wait() != 0 for j in jobs):
             sys.exit("compare_headers: a side did not compile")
         exe = os.path.join(tmp, "compare")
-        driver = ["-DCOMPARE_BOX2D"] if args.box2d else []
+        driver = (["-DCOMPARE_BOX2D"] if args.box2d else []) + (["-DCOMPARE_WORLD"] if args.world else [])
         libs = ["-lbox2d", "-lbenchmark", "-lpthread"]
         subprocess.run([cxx, *driver, os.path.join(HERE, "main.cpp"), *objs, *libs, "-o", exe], check=True)
         new_name = args.new or "working tree"
-        against = "Box2D 2.4.1" if args.box2d else "old: " + args.old
+        if args.box2d:
+            against = "Box2D 2.4.1" + (" with world manifolds" if args.world else "")
+        else:
+            against = "old: " + args.old
         print("%s, new: %s; %d bodies, best of %d passes" % (against, new_name, args.bodies, args.reps))
         failed = False
         for run in range(args.runs):

@@ -1,9 +1,10 @@
 // The driver of bench/compare/compare_headers.py: both sides' passes over each kind pair,
 // alternately, the best of `reps` each; prints new / old per kind pair and over all of them.
 // Built with COMPARE_BOX2D, the old side is Box2D 2.4.1's b2Collide* on the new side's pairs
-// (time_box2d_new) and the ratio collide / Box2D. Best-of passes replay the same pairs, so both
-// sides run with warm caches and trained branch predictors: the ratios say where the time goes,
-// the game loop says how much.
+// (time_box2d_new) and the ratio collide / Box2D; with COMPARE_WORLD too, Box2D's manifolds are also
+// turned into world values (time_box2d_world_new), as contact() returns them. Best-of passes replay the same pairs, so
+// both sides run with warm caches and trained branch predictors: the ratios say where the time goes, the game loop says
+// how much.
 
 #include <algorithm>
 #include <cstdio>
@@ -15,9 +16,15 @@ extern "C" const char* group_name_new(std::size_t bodies, std::size_t g, std::si
 extern "C" double time_group_new(std::size_t bodies, std::size_t g, long* points);
 #ifdef COMPARE_BOX2D
 extern "C" double time_box2d_new(std::size_t bodies, std::size_t g, long* points);
+extern "C" double time_box2d_world_new(std::size_t bodies, std::size_t g, long* points);
 #define OLD(name) name##_new
+#ifdef COMPARE_WORLD
+#define TIME_OLD time_box2d_world_new
+#define OLD_LABEL "Box2D+world"
+#else
 #define TIME_OLD time_box2d_new
 #define OLD_LABEL "Box2D"
+#endif
 #define NEW_LABEL "collide"
 constexpr bool kSameAnswers = false;  // Box2D's capsules (2-gons with a radius) find other points
 #else

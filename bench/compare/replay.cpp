@@ -105,9 +105,14 @@ extern "C" double COMPARE_ENTRY(time_group)(std::size_t bodies, std::size_t g, l
   return std::chrono::duration<double, std::nano>(stop - start).count();
 }
 
+namespace {
+
 /// Nanoseconds of one pass of Box2D 2.4.1's b2Collide* over kind pair g, each pair under the same
-/// poses as contact()'s (the rotation's stored cosine and sine); *points: the points found.
-extern "C" double COMPARE_ENTRY(time_box2d)(std::size_t bodies, std::size_t g, long* points) {
+/// poses as contact()'s (the rotation's stored cosine and sine); with World, each manifold with
+/// points is also turned into world points, normal and separations (b2WorldManifold::Initialize:
+/// what contact() returns). *points: the points found.
+template <bool World>
+double time_box2d_pass(std::size_t bodies, std::size_t g, long* points) {
   const Replay& r = replay(bodies);
   const std::vector<Placed>& pairs = r.groups[g].second;
   static std::vector<std::vector<std::pair<b2Transform, b2Transform>>> poses;  // per group, built once
@@ -126,11 +131,28 @@ extern "C" double COMPARE_ENTRY(time_box2d)(std::size_t bodies, std::size_t g, l
   long found = 0;
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const b2Shape *a = shapes[pairs[k].a].get(), *b = shapes[pairs[k].b].get();
     b2Manifold m;
-    bench::collide_b2(m, shapes[pairs[k].a].get(), poses[g][k].first, shapes[pairs[k].b].get(), poses[g][k].second);
+    bench::collide_b2(m, a, poses[g][k].first, b, poses[g][k].second);
     found += m.pointCount;
+    if (World && m.pointCount > 0) {
+      b2WorldManifold w;
+      w.Initialize(&m, poses[g][k].first, a->m_radius, poses[g][k].second, b->m_radius);
+      benchmark::DoNotOptimize(w);
+    }
   }
   const auto stop = std::chrono::steady_clock::now();
   *points = found;
   return std::chrono::duration<double, std::nano>(stop - start).count();
+}
+
+}  // namespace
+
+/// Nanoseconds of one pass of Box2D 2.4.1's b2Collide* over kind pair g (time_box2d_pass()).
+extern "C" double COMPARE_ENTRY(time_box2d)(std::size_t bodies, std::size_t g, long* points) {
+  return time_box2d_pass<false>(bodies, g, points);
+}
+/// The same, each manifold with points also turned into world values (time_box2d_pass()).
+extern "C" double COMPARE_ENTRY(time_box2d_world)(std::size_t bodies, std::size_t g, long* points) {
+  return time_box2d_pass<true>(bodies, g, points);
 }

@@ -363,64 +363,47 @@ template <Scalar T>
   return out;
 }
 
-/// The face of a polygon of at most 8 vertices that a circle's centre lies least deep behind (or
-/// farthest beyond), with its excess (the centre's signed distance to the face line) and the
-/// pair's rounding scale; apart when the centre lies beyond some face by more than the radius,
-/// the speculative distance and the band of that face's values (then the shapes are apart by more
-/// than the speculative distance, and the rest is not filled in).
-struct FaceExcess {
-  Calc excess = -std::numeric_limits<Calc>::infinity();
-  Calc scale = 0;
-  unsigned face = 0;
-  bool apart = false;
-};
-template <Scalar T, class Normal>
-FaceExcess face_excess(const Vec2c& c, Calc r, const ConvexPolygon<T>& b, Normal normal, Calc speculative) noexcept {
-  const Calc reach = r + std::max(speculative, Calc(0)), own = std::max(c.cwiseAbs().maxCoeff(), r);
-  FaceExcess out;
-  out.scale = own;
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    const Vec2c v = widen(b[i]);
-    const Calc e = (c - v).dot(normal(i));
-    // The excess is within a few roundings of |c| + |v_i|; tiny values underflow instead.
-    const Calc si = std::max(own, v.cwiseAbs().maxCoeff());
-    out.scale = std::max(out.scale, si);
-    if (e > reach && si >= kTinyCore && e > reach + band_of(si)) {
-      out.apart = true;
-      return out;
-    }
-    // Inside, a face equally deep up to rounding does not take over (kFaceOrderTie), so that ids
-    // stay put on a ridge; a face the centre lies beyond always does, and outside, the largest
-    // excess locates the closest feature.
-    if (e > out.excess + (out.excess < 0 && e < 0 ? tie_of(si) : Calc(0))) {
-      out.excess = e;
-      out.face = unsigned(i);
-    }
-  }
-  return out;
-}
-
-/// Circle against a polygon of at most 8 vertices, on its vertices and edge normals (cached, or
-/// computed when asked), by the face the centre lies least deep behind or farthest beyond
-/// (face_excess()): with the centre inside, that face is the reference face; outside, the closest
-/// point of the boundary. Kept out of line, so that circle_beyond_a_face() before it inlines into
-/// the caller.
+/// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
+/// did not find apart, by the face the centre lies least deep behind or farthest beyond (its
+/// excess, the centre's signed distance to the face's line, the largest): with the centre inside,
+/// that face is the reference face; outside, the closest point of the boundary. Kept out of line,
+/// so that circle_beyond_a_face() before it inlines into the caller.
 template <Scalar T>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
                                                                     Calc speculative) {
-  const Vec2c* cached = PolygonAccess::normals(b);
-  const auto normal = [&](std::size_t i) {
-    return cached ? cached[i] : edge_normal(widen(b[i]), widen(b[next_index(i, b.size())]));
-  };
-  const FaceExcess fe = face_excess(widen(a.center()), Calc(a.radius()), b, normal, speculative);
-  if (fe.apart) return std::nullopt;
+  const Vec2c* normals = PolygonAccess::normals(b);
   const std::size_t m = b.size();
   const Vec2c c = widen(a.center());
-  const Calc r = a.radius(), excess = fe.excess;
-  const unsigned face = fe.face;
-  if (!(fe.scale >= kTinyCore)) return contact_generic(a, b, speculative);
-  const Calc band = band_of(fe.scale);
-  const Vec2c n = normal(face);
+  const Calc r = a.radius(), own = std::max(c.cwiseAbs().maxCoeff(), r);
+  // The pair's rounding scale: its largest coordinate, a vertex's being that of a corner of the box.
+  const auto [lo, hi] = PolygonAccess::box(b);
+  const Calc scale = std::max({own, widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff()});
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  std::array<Calc, ConvexPolygon<T>::kInline> excesses{};
+  for (std::size_t i = 0; i < m; ++i) excesses[i] = (c - widen(b[i])).dot(normals[i]);
+  // The first face of the largest excess; inside, a face equally deep up to rounding
+  // (kFaceOrderTie of its values' scale) does not take over, so that ids stay put on a ridge.
+  Calc excess = excesses[0];
+  unsigned face = 0;
+  for (std::size_t i = 1; i < m; ++i) {
+    if (excesses[i] > excess) {
+      excess = excesses[i];
+      face = unsigned(i);
+    }
+  }
+  if (!(excess > 0)) {
+    excess = excesses[0];
+    face = 0;
+    for (std::size_t i = 1; i < m; ++i) {
+      const Calc si = std::max(own, widen(b[i]).cwiseAbs().maxCoeff());
+      if (excesses[i] > excess + (excesses[i] < 0 ? tie_of(si) : Calc(0))) {
+        excess = excesses[i];
+        face = unsigned(i);
+      }
+    }
+  }
+  const Calc band = band_of(scale);
+  const Vec2c n = normals[face];
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   };
@@ -477,7 +460,7 @@ template <Scalar T>
   // As contact_from_closest(): inside a face its normal (see closest_normal()), at a vertex the
   // direction to it; one point midway.
   const Vec2c dq = on_q - c;
-  out.normal = feature.edge ? Vec2c(-normal(feature.index)) : direction_of(dq, dist);
+  out.normal = feature.edge ? Vec2c(-normals[feature.index]) : direction_of(dq, dist);
   const Calc along = feature.edge ? dq.dot(out.normal) : dist;
   out.depth = std::max(Calc(0), r - along);
   out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
@@ -486,13 +469,12 @@ template <Scalar T>
   return out;
 }
 
-/// Whether the circle's centre lies beyond a face of the polygon (by its cached normals) by more
-/// than the radius, the speculative distance and the band of that face's values: then they are
-/// apart by more than the speculative distance. False for a polygon without cached normals.
+/// Whether the circle's centre lies beyond a face of the polygon (by its cached normals, which it
+/// must have) by more than the radius, the speculative distance and the band of that face's
+/// values: then they are apart by more than the speculative distance.
 template <Scalar T>
 bool circle_beyond_a_face(const Circle<T>& a, const ConvexPolygon<T>& b, Calc speculative) noexcept {
   const Vec2c* n = PolygonAccess::normals(b);
-  if (!n) return false;
   const Vec2c c = widen(a.center());
   const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0));
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -780,8 +762,10 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
       return contact_circle_rect(a, b, k, scale, speculative);
     } else if constexpr (circle_a) {
-      if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
-      if (b.size() <= ConvexPolygon<scalar_of_t<A>>::kInline) return contact_circle_polygon(a, b, speculative);
+      if (PolygonAccess::normals(b)) {
+        if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
+        return contact_circle_polygon(a, b, speculative);
+      }
     } else {
       if (apart_by_boxes(a, b, speculative)) return std::nullopt;
       return contact_hulls(a, b, speculative);

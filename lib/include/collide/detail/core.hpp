@@ -363,9 +363,16 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 
 /// max over the core of x . n
 inline Calc support(const Core& c, const Vec2c& n) noexcept {
-  Calc m = -std::numeric_limits<Calc>::infinity();
-  for (const Vec2c& p : c.pts()) m = std::max(m, p.dot(n));
-  return m;
+  // Two running maxima, so that the comparisons of even and odd points do not wait on each other.
+  const std::span<const Vec2c> pts = c.pts();
+  Calc m0 = -std::numeric_limits<Calc>::infinity(), m1 = m0;
+  std::size_t i = 0;
+  for (; i + 1 < pts.size(); i += 2) {
+    m0 = std::max(m0, pts[i].dot(n));
+    m1 = std::max(m1, pts[i + 1].dot(n));
+  }
+  if (i < pts.size()) m0 = std::max(m0, pts[i].dot(n));
+  return std::max(m0, m1);
 }
 
 /// Unit outward normals of a core's edges (both sides for a segment, none for a point).
