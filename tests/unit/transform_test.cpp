@@ -201,6 +201,59 @@ TYPED_TEST(Transforms, PolygonImageTestsItsTurnsWhenRoundingMayFlattenThem) {
   EXPECT_GT(flattened, 0) << "some pose should flatten the needle, or this test checks nothing";
 }
 
+// A circle against a polygon turned by a general rotation is computed in the polygon's frame
+// (detail/contact_local.hpp), not on the images. Its answer must be the images' answer: present
+// exactly when the imaged pair's contact is (both are exact on the computed images), the same
+// features, and values within a few rounding units of T. Half the circles are sized to touch the
+// polygon up to a hair (the local band then leaves most to the images); positions reach 1e4, where
+// the images' own rounding exceeds the local computation's. A failure names a local decision that
+// the images contradict, or a local value off the imaged one.
+TYPED_TEST(Transforms, CirclePolygonInThePolygonsFrameIsTheImagesAnswer) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const std::vector<ConvexPolygon<T>> polygons = turn_margin_polygons<T>();
+  std::mt19937 rng(20261204);
+  std::uniform_real_distribution<T> unit(-1, 1), angle(-4, 4), radius(T(0.05), T(2));
+  long decided = 0, present = 0, cases = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const ConvexPolygon<T>& poly = polygons[std::size_t(i) % polygons.size()];
+    const T scale = T(std::pow(10.0, double(i % 6) - 1));
+    const auto xb = Transform<T>::make(V(unit(rng) * scale, unit(rng) * scale), angle(rng)).value();
+    const auto xa = Transform<T>::make(xb.position() + V(unit(rng) * 6, unit(rng) * 6), angle(rng)).value();
+    Circle<T> circle(V(unit(rng), unit(rng)), radius(rng));
+    if (i % 2 == 1) {
+      // Within a few of the images' rounding units of touching (double radii can get there).
+      const T gap = distance(circle, xa, poly, xb);
+      const T touching = circle.radius() + gap + T(4 * transform_tolerance(poly, xb) * unit(rng));
+      if (!(touching > 0)) continue;
+      circle = Circle<T>(circle.center(), touching);
+    }
+    ++cases;
+    const detail::LocalContact local = detail::contact_local(circle, xa.pose(), poly, xb.pose(), 0.0);
+    decided += local.decided;
+    const auto imaged = detail::with_placed_pair(
+        circle, xa, poly, xb, [](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb); });
+    const auto c = contact(circle, xa, poly, xb), swapped = contact(poly, xb, circle, xa);
+    ASSERT_EQ(bool(c), bool(imaged)) << "case " << i << ": presence differs from the images'";
+    ASSERT_EQ(bool(swapped), bool(c)) << "case " << i;
+    if (!c) continue;
+    ++present;
+    EXPECT_EQ(swapped->normal, (-c->normal).eval()) << "case " << i << ": not symmetric";
+    EXPECT_EQ(swapped->ids[0], c->ids[0].swapped()) << "case " << i;
+    const double unit_error = rounding_tolerance(circle, xa, poly, xb);
+    const double eps = double(std::numeric_limits<T>::epsilon());
+    EXPECT_EQ(c->ids[0], imaged->ids[0]) << "case " << i << ": another feature than the images'";
+    EXPECT_LE((widen(c->normal) - widen(imaged->normal)).norm(), 4 * eps) << "case " << i;
+    EXPECT_LE(std::fabs(double(c->depth) - double(imaged->depth)), 4 * unit_error + 2 * eps * double(imaged->depth))
+        << "case " << i;
+    const Vec2c p = widen(c->points[0]), q = widen(imaged->points[0]);
+    EXPECT_LE((p - q).norm(), 4 * unit_error + 2 * eps * q.norm()) << "case " << i;
+  }
+  // The local path must carry most pairs, or this test would judge the images against themselves.
+  EXPECT_GT(decided, cases * 6 / 10);
+  EXPECT_GT(present, cases / 3);
+}
+
 TYPED_TEST(Transforms, CompoundChildrenCarryTheirTransforms) {
   using T = TypeParam;
   using V = Vec2<T>;

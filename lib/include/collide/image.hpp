@@ -164,7 +164,7 @@ decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
     // The stored shape's normals turned: the exact image's edges turn by q / |q|, and this costs
     // one square root for the polygon instead of one per edge.
     if (const Vec2c* normals = PolygonAccess::normals(s)) {
-      const Calc k = 1 / std::sqrt(x.q.squaredNorm());
+      const Calc k = inverse_norm_near_unit(x.q.squaredNorm());
       const Calc c = x.q.x() * k, sn = x.q.y() * k;
       ShapeAccess::cache_normals(img, [&](std::size_t i) {
         const Calc nx = normals[i].x(), ny = normals[i].y();

@@ -79,6 +79,17 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
   return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
+/// 1 / sqrt(ww) for the squared length ww of a stored rotation or axis (within a few roundings of
+/// T of 1): for |ww - 1| <= 2^-18 by two terms of its series about 1 (the rest is below 2^-55,
+/// so the value is within about one rounding of double, as the square root and division are),
+/// without their latency; otherwise by them.
+inline Calc inverse_norm_near_unit(Calc ww) noexcept {
+  const Calc e = ww - 1;  // exact near 1
+  if (std::fabs(e) <= 0x1p-18) [[likely]]
+    return 1 + e * (Calc(0.375) * e - Calc(0.5));
+  return 1 / std::sqrt(ww);
+}
+
 /// The unit outward normal of a counter-clockwise polygon's edge from a to b, computed in double
 /// (one square root; an edge whose squared length would underflow or overflow is scaled first).
 inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {

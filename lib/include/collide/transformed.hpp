@@ -8,7 +8,10 @@
 /// (transform.hpp). Queries compute that image in double (image.hpp) — a compound is never
 /// copied: each child is imaged when visited, under the body transform composed with its own —
 /// and run the world-space machinery on it. The identity computes nothing: the stored shape is
-/// used as is.
+/// used as is. One pair is computed in a local frame instead (detail/contact_local.hpp): the
+/// contact of a circle and a polygon turned by a general rotation, in the polygon's frame, decided
+/// there only when its gap is clear of a band that covers the images' rounding, so its answer is
+/// still the computed images' (present exactly when they overlap, their features).
 ///
 /// Error contract (the one definition, with the one at the top of queries.hpp):
 /// - delta_T(s, x) = transform_tolerance(s, x) bounds how far the computed image lies from the
@@ -42,6 +45,7 @@
 
 #include "collide/compound.hpp"
 #include "collide/contains.hpp"
+#include "collide/detail/contact_local.hpp"
 #include "collide/image.hpp"
 #include "collide/queries.hpp"
 #include "collide/raycast.hpp"
@@ -168,8 +172,25 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
     const Extra&... extra) {
   using T = scalar_of_t<A>;
   if (xa.is_identity() && xb.is_identity()) return detail::contact_as<T>(a, b, extra...);
-  return detail::with_placed_pair(
-      a, xa, b, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
+  const Calc speculative = [&] {  // as contact_as() takes it
+    if constexpr (sizeof...(Extra) == 0) {
+      return Calc(0);
+    } else {
+      const T s = T(extra...);
+      return s > 0 ? Calc(s) : Calc(0);
+    }
+  }();
+  return detail::visit_shapes(a, b, [&](const auto& ca, const auto& cb) {
+    std::optional<Contact<T>> out;
+    const detail::LocalContact local = detail::contact_local(ca, xa.pose(), cb, xb.pose(), speculative);
+    if (local.decided) {
+      if (local.contact) detail::round_into(*local.contact, out.emplace());
+      return out;
+    }
+    return detail::with_placed(ca, xa, [&](const auto& pa) {
+      return detail::with_placed(cb, xb, [&](const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
+    });
+  });
 }
 
 /// The margin resolve(a, xa, b, xb) adds (at most this): resolve_margin()'s formula on the world

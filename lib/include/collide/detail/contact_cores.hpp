@@ -257,11 +257,13 @@ class IncidentSink {
     if (rise == 0) return;  // parallel to the face
     len_ = norm_of(d);
     tangent_ = Vec2c(-f.normal.y(), f.normal.x());
-    tu_ = d.dot(tangent_) / len_;
-    ts_ = rise / len_;
+    // Both divisions wait on the square root only, not on each other.
+    const Calc along = d.dot(tangent_), inv_len = 1 / len_;
+    tu_ = along * inv_len;
+    ts_ = rise * inv_len;
     lower_ = rise > 0 ? 0 : 1;
     if (std::fabs(tu_) >= 0.5) {
-      const Calc inv = 1 / tu_;
+      const Calc inv = len_ / along;  // 1 / t_u
       slope_ = ts_ * inv;
       secant_ = std::fabs(inv);
       straight_ = true;

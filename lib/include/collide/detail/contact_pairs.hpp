@@ -28,6 +28,7 @@
 #include <limits>
 #include <optional>
 #include <type_traits>
+#include <utility>
 
 namespace collide::detail {
 
@@ -363,26 +364,13 @@ template <Scalar T>
   return out;
 }
 
-/// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
-/// did not find apart, by the face the centre lies least deep behind or farthest beyond (its
-/// excess, the centre's signed distance to the face's line, the largest): with the centre inside,
-/// that face is the reference face; outside, the closest point of the boundary. Kept out of line,
-/// so that circle_beyond_a_face() before it inlines into the caller.
+/// The face of the largest excess of a circle's centre against a polygon (excesses[i]: its signed
+/// distance to face i's line), the first of equals; with the centre inside, a face equally deep up
+/// to rounding (kFaceOrderTie of its values' scale, own: the centre's and the radius') does not
+/// take over, so that ids stay put on a ridge. Returns the face and its excess.
 template <Scalar T>
-[[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
-                                                                    Calc speculative) {
-  const Vec2c* normals = PolygonAccess::normals(b);
+std::pair<unsigned, Calc> face_of_largest_excess(const ConvexPolygon<T>& b, const Calc* excesses, Calc own) noexcept {
   const std::size_t m = b.size();
-  const Vec2c c = widen(a.center());
-  const Calc r = a.radius(), own = std::max(c.cwiseAbs().maxCoeff(), r);
-  // The pair's rounding scale: its largest coordinate, a vertex's being that of a corner of the box.
-  const auto [lo, hi] = PolygonAccess::box(b);
-  const Calc scale = std::max({own, widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff()});
-  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
-  std::array<Calc, ConvexPolygon<T>::kInline> excesses{};
-  for (std::size_t i = 0; i < m; ++i) excesses[i] = (c - widen(b[i])).dot(normals[i]);
-  // The first face of the largest excess; inside, a face equally deep up to rounding
-  // (kFaceOrderTie of its values' scale) does not take over, so that ids stay put on a ridge.
   Calc excess = excesses[0];
   unsigned face = 0;
   for (std::size_t i = 1; i < m; ++i) {
@@ -402,42 +390,93 @@ template <Scalar T>
       }
     }
   }
+  return {face, excess};
+}
+
+/// The feature of polygon b closest to a centre c beyond its face `face` of largest excess: the
+/// face when c projects inside its span (every excess is at most the distance, so c is that
+/// excess away); beyond an end, that vertex when c also projects beyond it on the neighbouring
+/// face; otherwise nothing (rounding ranked the faces within a hair of each other: the three faces
+/// around must be searched).
+template <Scalar T>
+std::optional<CoreFeature> feature_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c, unsigned face) noexcept {
+  const std::size_t m = b.size(), next = next_index(face, m);
+  const Vec2c v0 = widen(b[face]), v1 = widen(b[next]), d = v1 - v0;
+  const Calc along_face = (c - v0).dot(d);
+  if (along_face > 0 && along_face < d.squaredNorm()) return CoreFeature{face, true};
+  const bool first = !(along_face > 0);
+  const Vec2c vk = first ? v0 : v1;
+  const Vec2c other = widen(b[first ? (face == 0 ? m - 1 : face - 1) : next_index(next, m)]);
+  const Calc beyond = first ? (c - vk).dot(vk - other) : (c - vk).dot(other - vk);
+  if (first ? beyond >= 0 : beyond <= 0) return CoreFeature{unsigned(first ? face : next), false};
+  return std::nullopt;
+}
+
+/// A circle's contact from its centre c (radius r), the closest point on_q of the other shape, at
+/// distance dist > 0, and the feature there, with face normal n_face (outward, unit) when that
+/// feature is a face: inside a face its normal (see closest_normal()), at a vertex the direction
+/// to it; one point midway.
+inline CoreContact circle_contact_from_closest(const Vec2c& c, Calc r, const Vec2c& on_q, Calc dist,
+                                               const CoreFeature& feature, const Vec2c& n_face) noexcept {
+  CoreContact out;
+  out.count = 1;
+  const Vec2c dq = on_q - c;
+  out.normal = feature.edge ? Vec2c(-n_face) : direction_of(dq, dist);
+  const Calc along = feature.edge ? dq.dot(out.normal) : dist;
+  out.depth = std::max(Calc(0), r - along);
+  out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
+  out.separations[0] = along - r;
+  out.ids[0] = id_of(CoreFeature{0, false}, feature);
+  return out;
+}
+
+/// A circle's contact with its centre c inside a polygon's face of outward unit normal n (excess
+/// <= 0 behind it), the reference face, the centre its one incident point (as contact_from_axis()).
+inline CoreContact circle_contact_inside(const Vec2c& c, Calc r, const Vec2c& n, Calc excess, unsigned face) noexcept {
+  CoreContact out;
+  out.count = 1;
+  out.normal = -n;
+  out.depth = std::max(Calc(0), r - excess);
+  out.points[0] = c + n * ((-excess - r) * 0.5);
+  out.separations[0] = excess - r;
+  out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+  return out;
+}
+
+/// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
+/// did not find apart, by the face the centre lies least deep behind or farthest beyond
+/// (face_of_largest_excess()): with the centre inside, that face is the reference face; outside,
+/// the closest point of the boundary. Kept out of line, so that circle_beyond_a_face() before it
+/// inlines into the caller.
+template <Scalar T>
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
+                                                                    Calc speculative) {
+  const Vec2c* normals = PolygonAccess::normals(b);
+  const std::size_t m = b.size();
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius(), own = std::max(c.cwiseAbs().maxCoeff(), r);
+  // The pair's rounding scale: its largest coordinate, a vertex's being that of a corner of the box.
+  const auto [lo, hi] = PolygonAccess::box(b);
+  const Calc scale = std::max({own, widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff()});
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  std::array<Calc, ConvexPolygon<T>::kInline> excesses{};
+  for (std::size_t i = 0; i < m; ++i) excesses[i] = (c - widen(b[i])).dot(normals[i]);
+  const auto [face, excess] = face_of_largest_excess(b, excesses.data(), own);
   const Calc band = band_of(scale);
-  const Vec2c n = normals[face];
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   };
-  CoreContact out;
-  out.count = 1;
   if (!(excess > 0)) {
-    // The centre inside (certain when inside by more than the band): the face it is least deep
-    // behind is the reference face, the centre its one incident point (as contact_from_axis()).
+    // The centre inside (certain when inside by more than the band).
     if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
-    out.normal = -n;
-    out.depth = std::max(Calc(0), r - excess);
-    out.points[0] = c + n * ((-excess - r) * 0.5);
-    out.separations[0] = excess - r;
-    out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
-    return out;
+    return circle_contact_inside(c, r, normals[face], excess, face);
   }
-  // Every excess is at most the distance: a centre projecting inside the face of largest excess is
-  // that excess away from the face. Beyond an end of it, that vertex is the closest point when the
-  // centre also projects beyond it on the neighbouring face; otherwise (rounding ranked the faces
-  // within a hair of each other) the three faces around are searched.
-  const std::size_t next = next_index(face, m);
-  const Vec2c v0 = widen(b[face]), v1 = widen(b[next]), d = v1 - v0;
-  const Calc along_face = (c - v0).dot(d);
-  CoreFeature feature{face, true};
-  Vec2c on_q = c - n * excess;
+  std::optional<CoreFeature> feature = feature_beyond_face(b, c, face);
+  Vec2c on_q = c - normals[face] * excess;
   Calc dist = excess;
-  if (!(along_face > 0 && along_face < d.squaredNorm())) {
-    const bool first = !(along_face > 0);
-    const Vec2c vk = first ? v0 : v1;
-    const Vec2c other = widen(b[first ? (face == 0 ? m - 1 : face - 1) : next_index(next, m)]);
-    const Calc beyond = first ? (c - vk).dot(vk - other) : (c - vk).dot(other - vk);
-    if (first ? beyond >= 0 : beyond <= 0) {
-      feature = CoreFeature{unsigned(first ? face : next), false};
-      on_q = vk;
+  if (!feature || !feature->edge) {
+    if (feature) {
+      on_q = widen(b[feature->index]);
     } else {
       std::array<Vec2c, ConvexPolygon<T>::kInline> v;
       for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
@@ -457,16 +496,7 @@ template <Scalar T>
     const Core pc = core_of(a), pb = core_of(b);
     return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
   }
-  // As contact_from_closest(): inside a face its normal (see closest_normal()), at a vertex the
-  // direction to it; one point midway.
-  const Vec2c dq = on_q - c;
-  out.normal = feature.edge ? Vec2c(-normals[feature.index]) : direction_of(dq, dist);
-  const Calc along = feature.edge ? dq.dot(out.normal) : dist;
-  out.depth = std::max(Calc(0), r - along);
-  out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
-  out.separations[0] = along - r;
-  out.ids[0] = id_of(CoreFeature{0, false}, feature);
-  return out;
+  return circle_contact_from_closest(c, r, on_q, dist, *feature, normals[feature->index]);
 }
 
 /// Whether the circle's centre lies beyond a face of the polygon (by its cached normals, which it
