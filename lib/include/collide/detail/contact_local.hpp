@@ -36,8 +36,8 @@ struct LocalContact {
 /// the image's (b's cached normals turned by q / |q|, as with_image() turns them), the closest
 /// vertex is the image's vertex, so a decided contact has the image path's features.
 template <Scalar T>
-LocalContact contact_circle_polygon_local(const Circle<T>& a, const Pose& xa, const ConvexPolygon<T>& b,
-                                          const Pose& xb, Calc speculative) {
+LocalContact contact_circle_polygon_local(const Circle<T>& a, const Pose& xa, const ConvexPolygon<T>& b, const Pose& xb,
+                                          Calc speculative) {
   const Vec2c* normals = PolygonAccess::normals(b);
   if (!normals || xb.q.x() == 0 || xb.q.y() == 0) return {};
   const auto [lo, hi] = PolygonAccess::box(b);
