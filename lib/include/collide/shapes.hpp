@@ -79,10 +79,10 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
   return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
-/// 1 / sqrt(ww) for the squared length ww of a stored rotation or axis (within a few roundings of
-/// T of 1): for |ww - 1| <= 2^-18 by two terms of its series about 1 (the rest is below 2^-55,
-/// so the value is within about one rounding of double, as the square root and division are),
-/// without their latency; otherwise by them.
+/// 1 / sqrt(ww) for the squared length ww of a stored rotation (within a few roundings of T of
+/// 1): for |ww - 1| <= 2^-18 by its series about 1 to the second order (the rest is below
+/// 2^-55, so the value is within about one rounding of double, as the square root and division
+/// are), without their latency; otherwise by them. Exactly 1 for ww = 1 (quarter turns).
 inline Calc inverse_norm_near_unit(Calc ww) noexcept {
   const Calc e = ww - 1;  // exact near 1
   if (std::fabs(e) <= 0x1p-18) [[likely]]
