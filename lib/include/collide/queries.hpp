@@ -185,10 +185,7 @@ std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc specu
     return contact_pair(a, b, speculative);
   } else {
     std::optional<CoreContact> c = contact_pair(b, a, speculative);
-    if (c) {
-      c->normal = -c->normal;
-      for (FeatureId& id : c->ids) id = id.swapped();
-    }
+    if (c) *c = reversed(*c);
     return c;
   }
 }
@@ -242,10 +239,16 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
   }
 }
 
+/// A speculative distance as contact() takes it: negative or NaN counts as 0.
+template <Scalar T>
+Calc speculative_distance(T speculative) noexcept {
+  return speculative > 0 ? Calc(speculative) : Calc(0);
+}
+
 /// contact() with its result in T, for shapes stored or placed; speculative as contact() takes it.
 template <Scalar T, class A, class B>
 std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0)) {
-  const Calc spec = speculative > 0 ? Calc(speculative) : Calc(0);
+  const Calc spec = speculative_distance(speculative);
   const std::optional<CoreContact> c =
       visit_shapes(a, b, [&](const auto& ca, const auto& cb) { return contact_concrete(ca, cb, spec); });
   std::optional<Contact<T>> out;

@@ -172,14 +172,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
     const Extra&... extra) {
   using T = scalar_of_t<A>;
   if (xa.is_identity() && xb.is_identity()) return detail::contact_as<T>(a, b, extra...);
-  const Calc speculative = [&] {  // as contact_as() takes it
-    if constexpr (sizeof...(Extra) == 0) {
-      return Calc(0);
-    } else {
-      const T s = T(extra...);
-      return s > 0 ? Calc(s) : Calc(0);
-    }
-  }();
+  const Calc speculative = detail::speculative_distance(T(extra...));  // T() = 0 without one
   return detail::visit_shapes(a, b, [&](const auto& ca, const auto& cb) {
     std::optional<Contact<T>> out;
     const detail::LocalContact local = detail::contact_local(ca, xa.pose(), cb, xb.pose(), speculative);

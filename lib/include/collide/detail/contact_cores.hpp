@@ -40,6 +40,14 @@ struct CoreContact {
   std::array<FeatureId, 2> ids{};         ///< per point, the features that produced it
 };
 
+/// The same contact seen from the other shape (the pair asked in the other order): normal
+/// reversed, ids swapped.
+inline CoreContact reversed(CoreContact c) noexcept {
+  c.normal = -c.normal;
+  for (FeatureId& id : c.ids) id = id.swapped();
+  return c;
+}
+
 /// The feature id of a point from the features of the first and of the second core.
 inline FeatureId id_of(const CoreFeature& p, const CoreFeature& q) noexcept {
   return {0,

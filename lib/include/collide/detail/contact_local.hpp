@@ -87,10 +87,7 @@ LocalContact contact_local(const A& a, const Pose& xa, const B& b, const Pose& x
     return contact_circle_polygon_local(a, xa, b, xb, speculative);
   } else if constexpr (std::is_same_v<A, ConvexPolygon<T>> && std::is_same_v<B, Circle<T>>) {
     LocalContact out = contact_circle_polygon_local(b, xb, a, xa, speculative);
-    if (out.contact) {
-      out.contact->normal = -out.contact->normal;
-      for (FeatureId& id : out.contact->ids) id = id.swapped();
-    }
+    if (out.contact) out.contact = reversed(*out.contact);
     return out;
   } else {
     return {};
