@@ -444,13 +444,13 @@ inline CoreContact circle_contact_inside(const Vec2c& c, Calc r, const Vec2c& n,
 }
 
 /// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
-/// did not find apart, by the face the centre lies least deep behind or farthest beyond
-/// (face_of_largest_excess()): with the centre inside, that face is the reference face; outside,
-/// the closest point of the boundary. Kept out of line, so that circle_beyond_a_face() before it
-/// inlines into the caller.
+/// did not find apart (excesses: the ones it computed), by the face the centre lies least deep
+/// behind or farthest beyond (face_of_largest_excess()): with the centre inside, that face is the
+/// reference face; outside, the closest point of the boundary. Kept out of line, so that
+/// circle_beyond_a_face() before it inlines into the caller.
 template <Scalar T>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
-                                                                    Calc speculative) {
+                                                                    const Calc* excesses, Calc speculative) {
   const Vec2c* normals = PolygonAccess::normals(b);
   const std::size_t m = b.size();
   const Vec2c c = widen(a.center());
@@ -459,9 +459,7 @@ template <Scalar T>
   const auto [lo, hi] = PolygonAccess::box(b);
   const Calc scale = std::max({own, widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff()});
   if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
-  std::array<Calc, ConvexPolygon<T>::kInline> excesses{};
-  for (std::size_t i = 0; i < m; ++i) excesses[i] = (c - widen(b[i])).dot(normals[i]);
-  const auto [face, excess] = face_of_largest_excess(b, excesses.data(), own);
+  const auto [face, excess] = face_of_largest_excess(b, excesses, own);
   const Calc band = band_of(scale);
   const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
@@ -501,15 +499,17 @@ template <Scalar T>
 
 /// Whether the circle's centre lies beyond a face of the polygon (by its cached normals, which it
 /// must have) by more than the radius, the speculative distance and the band of that face's
-/// values: then they are apart by more than the speculative distance.
+/// values: then they are apart by more than the speculative distance. Otherwise every face's
+/// excess (the centre's signed distance to its line) is in excesses, for contact_circle_polygon().
 template <Scalar T>
-bool circle_beyond_a_face(const Circle<T>& a, const ConvexPolygon<T>& b, Calc speculative) noexcept {
+bool circle_beyond_a_face(const Circle<T>& a, const ConvexPolygon<T>& b, Calc speculative, Calc* excesses) noexcept {
   const Vec2c* n = PolygonAccess::normals(b);
   const Vec2c c = widen(a.center());
   const Calc r = a.radius(), reach = r + std::max(speculative, Calc(0));
   for (std::size_t i = 0; i < b.size(); ++i) {
     const Vec2c v = widen(b[i]);
     const Calc e = (c - v).dot(n[i]);
+    excesses[i] = e;
     if (e > reach) {
       // The excess is within a few roundings of |c| + |v|; tiny values underflow instead.
       const Calc scale = std::max({c.cwiseAbs().maxCoeff(), r, v.cwiseAbs().maxCoeff()});
@@ -793,8 +793,9 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       return contact_circle_rect(a, b, k, scale, speculative);
     } else if constexpr (circle_a) {
       if (PolygonAccess::normals(b)) {
-        if (circle_beyond_a_face(a, b, speculative)) return std::nullopt;
-        return contact_circle_polygon(a, b, speculative);
+        std::array<Calc, ConvexPolygon<scalar_of_t<A>>::kInline> excesses;
+        if (circle_beyond_a_face(a, b, speculative, excesses.data())) return std::nullopt;
+        return contact_circle_polygon(a, b, excesses.data(), speculative);
       }
     } else {
       if (apart_by_boxes(a, b, speculative)) return std::nullopt;
