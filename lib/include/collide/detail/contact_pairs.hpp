@@ -140,7 +140,7 @@ bool hull_of(const Obb<T>& s, Hull& h) {
 template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   if (s.size() > ConvexPolygon<T>::kInline) return false;
-  for (const auto& v : s.vertices()) h.core.push(widen(v));
+  h.core.push_each(s.vertices());
   // The largest absolute coordinate of the vertices is that of a corner of their box.
   const auto [lo, hi] = PolygonAccess::box(s);
   h.scale = std::max(widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff());

@@ -28,6 +28,18 @@ class Core {
     }
     push_big(p);
   }
+  /// push() of every point of xs, widened. The count is kept in a register while they fit inline:
+  /// a vector store may alias the count, which a loop of push() would then reload from memory.
+  template <class Points>
+  void push_each(const Points& xs) {
+    if (n_ + std::size(xs) <= small_.size()) [[likely]] {
+      std::size_t n = n_;
+      for (const auto& x : xs) small_[n++] = widen(x);
+      n_ = n;
+    } else {
+      for (const auto& x : xs) push(widen(x));
+    }
+  }
   /// Drops every point (the radius stays), so that the core can be filled again in place.
   void clear() noexcept {
     n_ = 0;
@@ -134,13 +146,13 @@ Core core_of(const Obb<T>& s) {
       if (orient(q[i], q[(i + 1) % 4], q[(i + 2) % 4]) <= 0) return hull_core(q);
     }
   }
-  for (const Vec2c& p : q) k.push(p);
+  k.push_each(q);
   return k;
 }
 template <Scalar T>
 Core core_of(const ConvexPolygon<T>& s) {
   Core c;
-  for (const Vec2<T>& p : s.vertices()) c.push(widen(p));
+  c.push_each(s.vertices());
   return c;
 }
 
