@@ -312,6 +312,8 @@ inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFa
   const Calc reach = ref_radius + inc_radius + speculative;
   Calc band = -1;  // computed only for an end beyond reach
   const IncidentSink sink(f);
+  // The count in a register: the points' vector stores may alias out.count.
+  std::size_t k = std::size_t(out.count);
   for (std::size_t i = 0; i < std::size_t(face.count); ++i) {
     const Vec2c end = face.ends[i] - f.normal * sink.at(face.ends[i]);
     const Calc s = (end - f.r1).dot(f.normal);
@@ -319,12 +321,12 @@ inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFa
       if (band < 0) band = kOverlapErrorFactor * kUnitRoundoff * std::max(point_scale(*f.ref, *f.inc), reach);
       if (s > reach + band) continue;
     }
-    const std::size_t k = std::size_t(out.count++);
     out.points[k] = end + f.normal * ((ref_radius - s - inc_radius) * 0.5);
     out.separations[k] = s - ref_radius - inc_radius;
     out.ids[k] = face_point_id(f, face.vertices[i]);
+    ++k;
   }
-  if (out.count == 2 && out.points[0] == out.points[1]) out.count = 1;
+  out.count = k == 2 && out.points[0] == out.points[1] ? 1 : int(k);
 }
 
 /// Step 1, with the normal of a face (closest_normal() found the closest points inside it) and
