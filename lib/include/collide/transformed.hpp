@@ -100,13 +100,17 @@ Calc image_tolerance_of(const S& s, const Transform<T>& x) {
   return image_tolerance(x.pose(), local_extent(s));
 }
 
+/// Calls f(a placed, b placed) for two concrete shapes.
+template <class A, class B, Scalar T, class F>
+decltype(auto) with_placed_both(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
+  return with_placed(a, xa,
+                     [&](const auto& pa) { return with_placed(b, xb, [&](const auto& pb) { return f(pa, pb); }); });
+}
+
 /// Calls f(a placed, b placed) for any two shapes (variants visited first).
 template <class A, class B, Scalar T, class F>
 decltype(auto) with_placed_pair(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
-  return visit_shapes(a, b, [&](const auto& ca, const auto& cb) {
-    return with_placed(ca, xa,
-                       [&](const auto& pa) { return with_placed(cb, xb, [&](const auto& pb) { return f(pa, pb); }); });
-  });
+  return visit_shapes(a, b, [&](const auto& ca, const auto& cb) { return with_placed_both(ca, xa, cb, xb, f); });
 }
 
 }  // namespace detail
@@ -180,9 +184,8 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
       if (local.contact) detail::round_into(*local.contact, out.emplace());
       return out;
     }
-    return detail::with_placed(ca, xa, [&](const auto& pa) {
-      return detail::with_placed(cb, xb, [&](const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
-    });
+    return detail::with_placed_both(
+        ca, xa, cb, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
   });
 }
 
