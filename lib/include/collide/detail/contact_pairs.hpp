@@ -661,14 +661,18 @@ Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hu
       [&](const Vec2c&, unsigned i) { return dq[i]; }, Calc(0), tie, stop_below);
 }
 
-/// The least-penetration axis of a box (hull hb) and a polygon (hull hp), as
-/// least_penetration_with() finds it, bit for bit: the box's faces, -v, u, v, -u, take the least
-/// and the largest of one pass of the polygon's vertices along u and along v instead of four.
-inline Axis least_penetration_of_box_polygon(const Hull& hb, const Hull& hp, Calc tie, Calc stop_below) {
+/// The least-penetration axis of a box (shape a, hull hb) and a polygon (hull hp): the box's
+/// faces, -v, u, v, -u, take the least and the largest of one pass of the polygon's vertices along
+/// u and along v instead of four; along a polygon face's normal n the box reaches
+/// -c . n + X |u . n| + Y |v . n| (in closed form, as least_penetration_of_boxes() takes it).
+template <class A>
+Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp, Calc tie, Calc stop_below) {
   const Core &p = hb.core, &q = hp.core;
   const Calc r = p.radius + q.radius;
   const Vec2c* nb = hb.normals();  // faces 0..3: -v, u, v, -u (hull_of)
   const Vec2c u = nb[1], v = nb[2];
+  const Rect k = rect_of(a);
+  const Calc x = k.hx * k.w.dot(u), y = k.hy * k.w.dot(u);  // w . u = |w|
   Calc ulo = std::numeric_limits<Calc>::infinity(), uhi = -ulo, vlo = ulo, vhi = -ulo;
   for (const Vec2c& x : q.pts()) {
     const Calc su = x.dot(u), sv = x.dot(v);
@@ -681,7 +685,10 @@ inline Axis least_penetration_of_box_polygon(const Hull& hb, const Hull& hp, Cal
                                p[3].dot(nb[3]) + uhi + r};
   return least_penetration_by(
       faces_of(hb), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
-      [&](const Vec2c& m, unsigned i) { return q[i].dot(m) + support(p, -m) + r; }, r, tie, stop_below);
+      [&](const Vec2c& m, unsigned i) {
+        return (q[i] - k.c).dot(m) + x * std::fabs(u.dot(m)) + y * std::fabs(v.dot(m)) + r;
+      },
+      r, tie, stop_below);
 }
 
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
@@ -700,7 +707,7 @@ template <class A, class B>
   if constexpr (is_box_v<A> && is_box_v<B>) {
     ax = least_penetration_of_boxes(a, b, ha, hb, tie, -band);
   } else if constexpr (is_box_v<A>) {
-    ax = least_penetration_of_box_polygon(ha, hb, tie, -band);
+    ax = least_penetration_of_box_polygon(a, ha, hb, tie, -band);
   } else {
     ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
   }
