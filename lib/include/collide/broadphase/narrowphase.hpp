@@ -66,7 +66,10 @@ class Narrowphase {
           [&](const auto& a0, const auto& b0) {
             using A = std::remove_cvref_t<decltype(a0)>;
             using B = std::remove_cvref_t<decltype(b0)>;
-            for (const std::size_t i : members) {
+            for (std::size_t k = 0; k < members.size(); ++k) {
+              if (k + kPrefetchAhead < members.size())
+                prefetch_pair(shapes, transforms, pairs[members[k + kPrefetchAhead]]);
+              const std::size_t i = members[k];
               const ShapePair& p = pairs[i];
               const A& a = *std::get_if<A>(&shapes[p.a]);
               const B& b = *std::get_if<B>(&shapes[p.b]);
@@ -90,6 +93,29 @@ class Narrowphase {
  private:
   static constexpr std::size_t kRuns = kKindCount * kKindCount;
   static_assert(kRuns <= 256, "kinds_ holds a kind pair in one byte");
+
+  /// How many pairs ahead the shapes and transforms are fetched into the cache: the pairs visit the
+  /// shapes in no order of their addresses, a large scene's shapes do not fit in the cache, and a
+  /// few contacts take about as long as a load from memory (4 measured faster than 8 at 10,000).
+  static constexpr std::size_t kPrefetchAhead = 4;
+
+  /// Asks the cache for both shapes of pair p (a variant's first line and its last, where the
+  /// standard library keeps the index of the alternative) and both transforms.
+  static void prefetch_pair(std::span<const Shape<T>> shapes, std::span<const Transform<T>> transforms,
+                            const ShapePair& p) noexcept {
+#if defined(__GNUC__) || defined(__clang__)
+    for (const std::size_t s : {p.a, p.b}) {
+      const char* bytes = reinterpret_cast<const char*>(&shapes[s]);
+      __builtin_prefetch(bytes);
+      __builtin_prefetch(bytes + sizeof(Shape<T>) - 1);
+      __builtin_prefetch(&transforms[s]);
+    }
+#else
+    static_cast<void>(shapes);
+    static_cast<void>(transforms);
+    static_cast<void>(p);
+#endif
+  }
 
   /// A counting sort of the pairs' indices by kind pair into order_ (stable), refusing a pair
   /// beyond the list on the way (BadPair); returns where each kind pair's run begins, and its end
