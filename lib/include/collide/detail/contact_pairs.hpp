@@ -663,8 +663,9 @@ Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hu
 
 /// The least-penetration axis of a box (shape a, hull hb) and a polygon (hull hp): the box's
 /// faces, -v, u, v, -u, take the least and the largest of one pass of the polygon's vertices along
-/// u and along v instead of four; along a polygon face's normal n the box reaches
-/// -c . n + X |u . n| + Y |v . n| (in closed form, as least_penetration_of_boxes() takes it).
+/// u and along v instead of four; along a polygon face's normal n the box, centre c, reaches
+/// -c . n + h_x |w| |u . n| + h_y |w| |v . n| (in closed form, as least_penetration_of_boxes()
+/// takes it).
 template <class A>
 Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp, Calc tie, Calc stop_below) {
   const Core &p = hb.core, &q = hp.core;
@@ -672,7 +673,7 @@ Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp
   const Vec2c* nb = hb.normals();  // faces 0..3: -v, u, v, -u (hull_of)
   const Vec2c u = nb[1], v = nb[2];
   const Rect k = rect_of(a);
-  const Calc x = k.hx * k.w.dot(u), y = k.hy * k.w.dot(u);  // w . u = |w|
+  const Calc half_u = k.hx * k.w.dot(u), half_v = k.hy * k.w.dot(u);  // w . u = |w|
   Calc ulo = std::numeric_limits<Calc>::infinity(), uhi = -ulo, vlo = ulo, vhi = -ulo;
   for (const Vec2c& x : q.pts()) {
     const Calc su = x.dot(u), sv = x.dot(v);
@@ -686,7 +687,7 @@ Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp
   return least_penetration_by(
       faces_of(hb), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
       [&](const Vec2c& m, unsigned i) {
-        return (q[i] - k.c).dot(m) + x * std::fabs(u.dot(m)) + y * std::fabs(v.dot(m)) + r;
+        return (q[i] - k.c).dot(m) + half_u * std::fabs(u.dot(m)) + half_v * std::fabs(v.dot(m)) + r;
       },
       r, tie, stop_below);
 }
