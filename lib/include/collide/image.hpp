@@ -46,8 +46,16 @@ struct ShapeAccess {
     poly.size_ = n;
     if (n > ConvexPolygon<T>::kInline) poly.heap_.resize(n);
     Vec2<T>* out = n > ConvexPolygon<T>::kInline ? poly.heap_.data() : poly.inline_.data();
-    for (std::size_t k = 0; k < n; ++k) out[k] = at(k);
-    poly.cache_box();
+    Vec2<T> lo = at(0), hi = lo;
+    out[0] = lo;
+    for (std::size_t k = 1; k < n; ++k) {
+      const Vec2<T> v = at(k);
+      out[k] = v;
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    poly.lo_ = lo;
+    poly.hi_ = hi;
     return poly;
   }
   /// Caches normal(k) as edge k's unit outward normal (a polygon of at most kInline vertices).
@@ -145,12 +153,8 @@ decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
   const std::size_t n = s.size();
-  Calc local = 0;
-  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) {
-    const Vec2c v = widen(s[k]);
-    local = std::max(local, v.cwiseAbs().maxCoeff());
-    return image_point(x, v);
-  });
+  const Calc local = PolygonAccess::largest_coordinate(s);
+  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
   // Every mapped vertex lies within image_tolerance() of its exact image under x's own values
   // (composed or not), whose turns are all strictly left: a turn margin beyond that tolerance
   // keeps the mapped turns left without testing them.

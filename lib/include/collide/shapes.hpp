@@ -557,6 +557,11 @@ struct PolygonAccess {
   static std::pair<Vec2<T>, Vec2<T>> box(const ConvexPolygon<T>& s) noexcept {
     return {s.lo_, s.hi_};
   }
+  /// The largest absolute coordinate of the polygon's vertices: that of a corner of their box.
+  template <Scalar T>
+  static Calc largest_coordinate(const ConvexPolygon<T>& s) noexcept {
+    return std::max(widen(s.lo_).cwiseAbs().maxCoeff(), widen(s.hi_).cwiseAbs().maxCoeff());
+  }
   /// The polygon's cached turn_margin(), or 0 when it has none.
   template <Scalar T>
   static Calc turn_margin(const ConvexPolygon<T>& s) noexcept {

@@ -40,8 +40,7 @@ LocalContact contact_circle_polygon_local(const Circle<T>& a, const Pose& xa, co
                                           Calc speculative) {
   const Vec2c* normals = PolygonAccess::normals(b);
   if (!normals || xb.q.x() == 0 || xb.q.y() == 0) return {};
-  const auto [lo, hi] = PolygonAccess::box(b);
-  const Calc extent = std::max(widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff());
+  const Calc extent = PolygonAccess::largest_coordinate(b);
   const Calc image_band = image_tolerance(xb, extent);
   // A polygon whose image may turn right somewhere is imaged as the hull of its rounded vertices.
   if (!(PolygonAccess::turn_margin(b) > image_band)) return {};

@@ -141,9 +141,7 @@ template <Scalar T>
 bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
   if (s.size() > ConvexPolygon<T>::kInline) return false;
   h.core.push_each(s.vertices());
-  // The largest absolute coordinate of the vertices is that of a corner of their box.
-  const auto [lo, hi] = PolygonAccess::box(s);
-  h.scale = std::max(widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff());
+  h.scale = PolygonAccess::largest_coordinate(s);
   h.cached = PolygonAccess::normals(s);
   return true;
 }
@@ -455,9 +453,7 @@ template <Scalar T>
   const std::size_t m = b.size();
   const Vec2c c = widen(a.center());
   const Calc r = a.radius(), own = std::max(c.cwiseAbs().maxCoeff(), r);
-  // The pair's rounding scale: its largest coordinate, a vertex's being that of a corner of the box.
-  const auto [lo, hi] = PolygonAccess::box(b);
-  const Calc scale = std::max({own, widen(lo).cwiseAbs().maxCoeff(), widen(hi).cwiseAbs().maxCoeff()});
+  const Calc scale = std::max(own, PolygonAccess::largest_coordinate(b));  // the pair's largest coordinate
   if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
   const auto [face, excess] = face_of_largest_excess(b, excesses, own);
   const Calc band = band_of(scale);
