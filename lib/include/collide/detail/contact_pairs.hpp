@@ -531,6 +531,15 @@ template <Scalar T>
 Rect rect_of(const Obb<T>& s) noexcept {
   return {widen(s.center()), widen(s.axis()), Calc(s.half_extents().x()), Calc(s.half_extents().y())};
 }
+/// A box's half-lengths along its unit axes u and perp(u) (u: its hull's normal 1), h_x |w| and
+/// h_y |w|: w . u = |w|.
+struct HalfLengths {
+  Calc x, y;
+};
+inline HalfLengths half_lengths(const Rect& k, const Vec2c& u) noexcept {
+  const Calc len = k.w.dot(u);
+  return {k.hx * len, k.hy * len};
+}
 /// Whether a box (k its rect_of()) is proper: it has an interior and its corners keep their order
 /// when computed (see hull_of).
 template <Scalar T>
@@ -641,9 +650,9 @@ inline constexpr bool is_box_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std:
 template <class A, class B>
 Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hull& hb, Calc tie, Calc stop_below) {
   const Rect ka = rect_of(a), kb = rect_of(b);
-  const Vec2c ua = ha.normals()[1], ub = hb.normals()[1];           // faces 0..3: -v, u, v, -u (hull_of)
-  const Calc xa = ka.hx * ka.w.dot(ua), ya = ka.hy * ka.w.dot(ua);  // w . u = |w|
-  const Calc xb = kb.hx * kb.w.dot(ub), yb = kb.hy * kb.w.dot(ub);
+  const Vec2c ua = ha.normals()[1], ub = hb.normals()[1];  // faces 0..3: -v, u, v, -u (hull_of)
+  const auto [xa, ya] = half_lengths(ka, ua);
+  const auto [xb, yb] = half_lengths(kb, ub);
   // |u_a . u_b| = |v_a . v_b| and |v_a . u_b| = |u_a . v_b|, bit for bit.
   const Calc cs = std::fabs(ua.dot(ub)), sn = std::fabs(perp(ua).dot(ub));
   const Calc wua = xa + xb * cs + yb * sn, wva = ya + xb * sn + yb * cs;
@@ -669,7 +678,7 @@ Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp
   const Vec2c* nb = hb.normals();  // faces 0..3: -v, u, v, -u (hull_of)
   const Vec2c u = nb[1], v = nb[2];
   const Rect k = rect_of(a);
-  const Calc half_u = k.hx * k.w.dot(u), half_v = k.hy * k.w.dot(u);  // w . u = |w|
+  const HalfLengths half = half_lengths(k, u);
   Calc ulo = std::numeric_limits<Calc>::infinity(), uhi = -ulo, vlo = ulo, vhi = -ulo;
   for (const Vec2c& x : q.pts()) {
     const Calc su = x.dot(u), sv = x.dot(v);
@@ -683,7 +692,7 @@ Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp
   return least_penetration_by(
       faces_of(hb), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
       [&](const Vec2c& m, unsigned i) {
-        return (q[i] - k.c).dot(m) + half_u * std::fabs(u.dot(m)) + half_v * std::fabs(v.dot(m)) + r;
+        return (q[i] - k.c).dot(m) + half.x * std::fabs(u.dot(m)) + half.y * std::fabs(v.dot(m)) + r;
       },
       r, tie, stop_below);
 }
@@ -728,8 +737,8 @@ inline constexpr bool is_hull_kind_v =
 template <class A>
 Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc, Calc tie, Calc stop_below) {
   const Rect k = rect_of(a);
-  const Vec2c u = ha.normals()[1], v = perp(u);             // faces 0..3: -v, u, v, -u (hull_of)
-  const Calc x = k.hx * k.w.dot(u), y = k.hy * k.w.dot(u);  // w . u = |w|
+  const Vec2c u = ha.normals()[1], v = perp(u);  // faces 0..3: -v, u, v, -u (hull_of)
+  const auto [x, y] = half_lengths(k, u);
   const Vec2c &e0 = hc.core[0], &e1 = hc.core[1];
   const Calc r = hc.core.radius;
   const Calc cu = k.c.dot(u), cv = k.c.dot(v);
