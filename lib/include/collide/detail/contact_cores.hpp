@@ -153,24 +153,20 @@ struct IncidentFace {
   int count = 0;
 };
 
+/// Edge j of a core of at least 2 points as an incident face.
+inline IncidentFace incident_edge(const Core& inc, std::size_t j) noexcept {
+  const std::size_t after = next_index(j, inc.size());
+  return {{inc[j], inc[after]}, {unsigned(j), unsigned(after)}, 2};
+}
+
 /// Step 3: the incident core's face most anti-parallel to the reference normal. Among faces as
 /// anti-parallel as the best up to rounding (a polygon side split by a vertex one ulp off the
 /// line), the one that spans most of the reference face: the other may lie beside it entirely,
 /// and clipping would then find nothing.
 inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_normals = nullptr) {
   const Core& inc = *f.inc;
-  IncidentFace out;
-  if (inc.size() == 1) {
-    out.ends[0] = inc[0];
-    out.count = 1;
-    return out;
-  }
-  if (inc.size() == 2) {
-    out.ends = {inc[0], inc[1]};
-    out.vertices = {0, 1};
-    out.count = 2;
-    return out;
-  }
+  if (inc.size() == 1) return {{inc[0], Vec2c::Zero()}, {0, 0}, 1};
+  if (inc.size() == 2) return incident_edge(inc, 0);
   std::array<Calc, 8> dots{};  // the alignments of the first 8 faces, computed once
   auto anti_parallel = [&](std::size_t j) {
     if (inc_normals) return inc_normals[j].dot(f.normal);
@@ -181,17 +177,24 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
     return dot;
   };
   std::size_t best = 0;
-  Calc best_dot = std::numeric_limits<Calc>::infinity();
+  Calc best_dot = std::numeric_limits<Calc>::infinity(), next_dot = best_dot;  // the least and the next
+  bool unordered = false;
   for (std::size_t j = 0; j < inc.size(); ++j) {
     const Calc dot = anti_parallel(j);
+    unordered |= dot != dot;
     if (dot < best_dot) {
+      next_dot = best_dot;
       best_dot = dot;
       best = j;
+    } else if (dot < next_dot) {
+      next_dot = dot;
     }
   }
-  // A later face takes over only when it spans more by more than the spans' rounding (faces of a
-  // square at 45 degrees to the reference face span it equally), so that the face, and its ids,
-  // stay put while the pair moves.
+  // A face as anti-parallel as the best up to kFaceTieTolerance (NaN counts as one) takes over when
+  // it comes first or spans more by more than the spans' rounding (faces of a square at 45 degrees
+  // to the reference face span it equally), so that the face, and its ids, stay put while the pair
+  // moves. Usually there is none.
+  if (next_dot > best_dot + kFaceTieTolerance && !unordered) return incident_edge(inc, best);
   const Vec2c tangent = f.r2 - f.r1;
   const Calc len2 = tangent.squaredNorm();
   Calc best_span = 0, span_tie = -1;
@@ -209,11 +212,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
     best_span = span;
     best = j;
   }
-  const std::size_t after = next_index(best, inc.size());
-  out.ends = {inc[best], inc[after]};
-  out.vertices = {unsigned(best), unsigned(after)};
-  out.count = 2;
-  return out;
+  return incident_edge(inc, best);
 }
 
 /// Step 4: clips a two-point incident face to 0 <= (x - r1) . tangent <= |tangent|^2. Returns
