@@ -51,6 +51,29 @@ TYPED_TEST(Manifolds, BoxRestingOnBoxHasTwoPointsWithFaceIds) {
   EXPECT_TRUE(std::is_permutation(r->ids.begin(), r->ids.end(), std::begin(other)));
 }
 
+/// A polygon whose bottom side is split by a vertex 10^-7 below the line of its ends, resting on
+/// a box's top face: its two bottom faces are equally anti-parallel to that face up to rounding.
+/// The flatter one, on the right, is the more anti-parallel in the last bits, but the box's face
+/// ends under it; the left one lies over the face along all its length, spans more of it, and
+/// is the incident face: its two ends are the points, with its vertices' ids.
+TYPED_TEST(Manifolds, OfFacesEquallyAntiParallelTheOneSpanningMoreIsIncident) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const Aabb<T> ground(V(-3, -1), V(T(0.5), 0));
+  const ConvexPolygon<T> crate({V(-1, 0), V(0, T(-1e-7)), V(2, 0), V(2, 1), V(-1, 1)});
+  const auto c = contact(ground, crate);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  EXPECT_NEAR(double(c->normal.y()), 1.0, tol<T>());
+  const FeatureId want[2] = {face_on_a(2, 0), face_on_a(2, 1)};
+  EXPECT_TRUE(std::is_permutation(c->ids.begin(), c->ids.end(), std::begin(want)))
+      << "the incident face must be the left one, over the ground's face, not the flatter one past its end";
+  std::array<double, 2> xs{double(c->points[0].x()), double(c->points[1].x())};
+  std::sort(xs.begin(), xs.end());
+  EXPECT_NEAR(xs[0], -1.0, tol<T>());
+  EXPECT_NEAR(xs[1], 0.0, tol<T>());
+}
+
 /// The crate slid sideways and sunk deeper keeps the same reference and incident features, so
 /// the same ids; tilted, its points separate unevenly.
 TYPED_TEST(Manifolds, IdsStayWhileTheFeaturesStay) {
