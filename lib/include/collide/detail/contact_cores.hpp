@@ -23,9 +23,15 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace collide::detail {
 
@@ -40,11 +46,31 @@ struct CoreContact {
   std::array<FeatureId, 2> ids{};         ///< per point, the features that produced it
 };
 
+/// Writes a contact's two ids in one 16-byte store where it can. A contact is copied and read
+/// back in 16-byte pieces, and a load cannot take its bytes from several narrower stores still on
+/// their way to the cache: it waits for them. Fields written one by one would make it wait.
+inline void store_ids(std::array<FeatureId, 2>& ids, const FeatureId& a, const FeatureId& b) noexcept {
+#if defined(__SSE2__)
+  if constexpr (std::endian::native == std::endian::little) {
+    // FeatureId's bytes in order: child_a (2), child_b (2), index_a, index_b, kind_a, kind_b.
+    static_assert(sizeof(FeatureId) == 8 && sizeof(ids) == 16);
+    const auto bits = [](const FeatureId& id) {
+      return static_cast<long long>(std::uint64_t(id.child_a) | std::uint64_t(id.child_b) << 16 |
+                                    std::uint64_t(id.index_a) << 32 | std::uint64_t(id.index_b) << 40 |
+                                    std::uint64_t(id.kind_a) << 48 | std::uint64_t(id.kind_b) << 56);
+    };
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(ids.data()), _mm_set_epi64x(bits(b), bits(a)));
+    return;
+  }
+#endif
+  ids = {a, b};
+}
+
 /// The same contact seen from the other shape (the pair asked in the other order): normal
 /// reversed, ids swapped.
 inline CoreContact reversed(CoreContact c) noexcept {
   c.normal = -c.normal;
-  for (FeatureId& id : c.ids) id = id.swapped();
+  store_ids(c.ids, c.ids[0].swapped(), c.ids[1].swapped());
   return c;
 }
 
@@ -365,7 +391,7 @@ inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
   out.separations[0] = cn.distance - p.radius - q.radius;
-  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
   out.count = 1;
   return out;
 }
@@ -430,7 +456,7 @@ inline void name_end_vertex(const ReferenceFace& f, CoreContact& out) {
   // r1 is the reference core's point f.face and r2 the next (a segment's face 1 runs from its point 1).
   const unsigned end = along <= 0 ? f.face : unsigned(next_index(f.face, f.ref->size()));
   const CoreFeature vertex{end, false}, point{0, false};
-  out.ids[0] = f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex);
+  store_ids(out.ids, f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex), out.ids[1]);
 }
 
 /// Steps 2 to 7 from the axis of least penetration of two cores known to overlap. normals_p and
@@ -454,7 +480,7 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
     unsigned deepest = 0;
     out.points[0] = find_witness_point(p, q, f, out.depth, deepest);
     out.separations[0] = -out.depth;
-    out.ids[0] = face_point_id(f, deepest);
+    store_ids(out.ids, face_point_id(f, deepest), out.ids[1]);
     out.count = 1;
   }
   name_end_vertex(f, out);
@@ -522,7 +548,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
   out.separations[0] = gap;
-  out.ids[0] = id_of(cl.feature_p, cl.feature_q);
+  store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
   out.count = 1;
   return out;
 }

@@ -357,7 +357,7 @@ template <Scalar T>
   out.depth = std::max(Calc(0), radii - along);
   out.points[0] = ((c + n * ra) + (on_q - n * rb)) * 0.5;
   out.separations[0] = along - radii;
-  out.ids[0] = id_of(CoreFeature{0, false}, feature);
+  store_ids(out.ids, id_of(CoreFeature{0, false}, feature), FeatureId{});
   out.count = 1;
   return out;
 }
@@ -424,7 +424,7 @@ inline CoreContact circle_contact_from_closest(const Vec2c& c, Calc r, const Vec
   out.depth = std::max(Calc(0), r - along);
   out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
   out.separations[0] = along - r;
-  out.ids[0] = id_of(CoreFeature{0, false}, feature);
+  store_ids(out.ids, id_of(CoreFeature{0, false}, feature), FeatureId{});
   return out;
 }
 
@@ -437,7 +437,7 @@ inline CoreContact circle_contact_inside(const Vec2c& c, Calc r, const Vec2c& n,
   out.depth = std::max(Calc(0), r - excess);
   out.points[0] = c + n * ((-excess - r) * 0.5);
   out.separations[0] = excess - r;
-  out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+  store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
   return out;
 }
 
@@ -606,7 +606,7 @@ template <Scalar T, class B>
       // closest point's rounding at the box's scale would tilt the normal by about rounding /
       // dist, and a deep push along it would fall short of clearing the flat side.
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
-      out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{corner, false});
+      store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{corner, false}), FeatureId{});
       out.normal = direction_of(dq, dist);
       out.separations[0] = out.overlapping ? gap : std::max(gap, Calc(0));
       out.depth = std::max(Calc(0), -out.separations[0]);
@@ -629,13 +629,13 @@ template <Scalar T, class B>
   const bool along_w = std::max(ex, ey) > 0 ? ex >= ey : ex >= ey - tie;
   const bool positive = along_w ? s > tie : t > tie;
   const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
-  const Vec2c n_face = (along_w ? w : v) * ((positive ? 1 : -1) / len);
+  const Vec2c n_face = (along_w ? w : v) * (positive ? inv : -inv);
   const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
   out.separations[0] = out.overlapping ? e - r : std::max(e - r, Calc(0));
   out.depth = std::max(Calc(0), -out.separations[0]);
   out.points[0] = c + n_face * ((-e - r) * 0.5);
-  out.ids[0] = id_of(CoreFeature{0, false}, CoreFeature{face, true});
+  store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
   return out;
 }
 
