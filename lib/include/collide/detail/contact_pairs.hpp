@@ -588,9 +588,11 @@ template <Scalar T, class B>
   // An AABB's axis is (1, 0) exactly: its divisions and square root fold away.
   constexpr bool aligned = std::is_same_v<B, Aabb<T>>;
   const Vec2c w = aligned ? Vec2c(1, 0) : k.w, v = perp(w), d = c - k.c;
-  const Calc ww = aligned ? Calc(1) : w.squaredNorm(), len = aligned ? Calc(1) : std::sqrt(ww);
+  // 1 / |w| without a square root or division for a stored unit axis (inverse_norm_near_unit).
+  const Calc ww = aligned ? Calc(1) : w.squaredNorm(), inv = aligned ? Calc(1) : inverse_norm_near_unit(ww);
+  const Calc len = ww * inv, inv2 = inv * inv;
   const Calc sw = d.dot(w), tw = d.dot(v);
-  const Calc s = sw / ww, t = tw / ww;
+  const Calc s = sw * inv2, t = tw * inv2;
   const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
   CoreContact out;
   out.count = 1;
