@@ -58,8 +58,9 @@ struct Hull {
   const Vec2c* normals() const noexcept { return own ? own_normals.data() : cached; }
 };
 
-/// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root.
-inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
+/// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root (always inlined:
+/// a call spills the caller's registers around the division it waits on).
+[[gnu::always_inline]] inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
   const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
   if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
     return d / dist;
@@ -395,9 +396,11 @@ std::pair<unsigned, Calc> face_of_largest_excess(const ConvexPolygon<T>& b, cons
 /// face when c projects inside its span (every excess is at most the distance, so c is that
 /// excess away); beyond an end, that vertex when c also projects beyond it on the neighbouring
 /// face; otherwise nothing (rounding ranked the faces within a hair of each other: the three faces
-/// around must be searched).
+/// around must be searched). Always inlined: returned from a call, the optional is stored a field
+/// at a time and loaded back whole, and the load waits for the stores.
 template <Scalar T>
-std::optional<CoreFeature> feature_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c, unsigned face) noexcept {
+[[gnu::always_inline]] inline std::optional<CoreFeature> feature_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c,
+                                                                             unsigned face) noexcept {
   const std::size_t m = b.size(), next = next_index(face, m);
   const Vec2c v0 = widen(b[face]), v1 = widen(b[next]), d = v1 - v0;
   const Calc along_face = (c - v0).dot(d);
