@@ -47,11 +47,8 @@ struct Hull {
   template <class Points>
   void push_all(const Points& xs) {
     Calc m = 0;
-    for (const auto& x : xs) {
-      const Vec2c p = widen(x);
-      core.push(p);
-      m = std::max(m, p.cwiseAbs().maxCoeff());
-    }
+    for (const auto& x : xs) m = std::max(m, widen(x).cwiseAbs().maxCoeff());
+    core.push_each(xs);
     scale = m;
   }
   /// Every face's normal when known (a box, a capsule, a polygon's cache), else nullptr.
@@ -152,15 +149,14 @@ bool hull_of(const ConvexPolygon<T>& s, Hull& h) {
 template <Scalar T>
 bool hull_of(const Capsule<T>& s, Hull& h) {
   if (s.b() == s.a()) return false;
-  h.core.push(widen(s.a()));
-  h.core.push(widen(s.b()));
+  // The ends are kept in registers: read back from the core, they would wait on its stores.
+  const Vec2c a = widen(s.a()), b = widen(s.b()), d = b - a;
+  h.push_all(std::array<Vec2c, 2>{a, b});
   h.core.radius = s.radius();
-  const Vec2c d = h.core[1] - h.core[0];
   const Vec2c n = unit_of(Vec2c(d.y(), -d.x()));
   h.own_normals[0] = n;
   h.own_normals[1] = -n;
   h.own = true;
-  h.scale = std::max(h.core[0].cwiseAbs().maxCoeff(), h.core[1].cwiseAbs().maxCoeff());
   return true;
 }
 
