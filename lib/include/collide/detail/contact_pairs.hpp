@@ -346,8 +346,8 @@ template <Scalar T>
     if (n.dot(dq) < 0) n = -n;
   }
   const bool side = n != Vec2c::Zero();
-  const Calc along = side ? dq.dot(n) : norm_of(dq);
-  if (!side) n = unit_of(dq);
+  if (!side) n = direction_of(dq, dist);  // |dq| is dist: the same square root
+  const Calc along = side ? dq.dot(n) : dist;
   if (!(along > band_of(points))) return contact_generic(a, b, speculative);
   CoreContact out;
   out.normal = n;
