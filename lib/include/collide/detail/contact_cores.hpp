@@ -123,7 +123,8 @@ inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest&
     if (n.dot(d) < 0) n = -n;
     if (n != Vec2c::Zero()) return {n, d.dot(n), owner, f.index};
   }
-  return {unit_of(d), norm_of(d)};
+  const Calc dist = norm_of(d);
+  return {direction_of(d, dist), dist};
 }
 
 /// The face of least penetration: which core owns it, its ends and its outward normal.

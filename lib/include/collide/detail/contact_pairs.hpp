@@ -55,15 +55,6 @@ struct Hull {
   const Vec2c* normals() const noexcept { return own ? own_normals.data() : cached; }
 };
 
-/// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root (always inlined:
-/// a call spills the caller's registers around the division it waits on).
-[[gnu::always_inline]] inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
-  const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
-  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
-    return d / dist;
-  return unit_of(d);
-}
-
 /// The error bound of a filtered signed distance (a face depth, a closest distance) of shapes at
 /// scale s: every value entering it carries a few roundings of s (corners, differences, dots),
 /// below 32 units; 64 are used.

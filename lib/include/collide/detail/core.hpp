@@ -373,6 +373,15 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
   return unit_of_scaled(v, m);
 }
 
+/// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root (always inlined:
+/// a call spills the caller's registers around the division it waits on).
+[[gnu::always_inline]] inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
+  const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
+  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
+    return d / dist;
+  return unit_of(d);
+}
+
 /// max over the core of x . n
 inline Calc support(const Core& c, const Vec2c& n) noexcept {
   // Two running maxima, so that the comparisons of even and odd points do not wait on each other.
