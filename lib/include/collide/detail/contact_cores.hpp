@@ -72,6 +72,15 @@ inline void store_ids(std::array<FeatureId, 2>& ids, const FeatureId& a, const F
   ids = {a, b};
 }
 
+/// Writes a contact's two separations in one 16-byte store, for the reason store_ids() gives.
+inline void store_separations(std::array<Calc, 2>& separations, Calc first, Calc second) noexcept {
+#if defined(__SSE2__)
+  _mm_storeu_pd(separations.data(), _mm_set_pd(second, first));
+#else
+  separations = {first, second};
+#endif
+}
+
 /// The same contact seen from the other shape (the pair asked in the other order): normal
 /// reversed, ids swapped.
 inline CoreContact reversed(CoreContact c) noexcept {
@@ -397,7 +406,7 @@ inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core
   if (out.count > 0) return out;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
-  out.separations[0] = cn.distance - p.radius - q.radius;
+  store_separations(out.separations, cn.distance - p.radius - q.radius, out.separations[1]);
   store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
   out.count = 1;
   return out;
@@ -476,7 +485,7 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
   if (ax.owner < 0) {
     // Two points: the surfaces along the normal are p + n rp and q - n rq; the point between them.
     out.points[0] = (p[0] + q[0]) * 0.5 + ax.normal * ((p.radius - q.radius) * 0.5);
-    out.separations[0] = -ax.depth;
+    store_separations(out.separations, -ax.depth, 0);
     out.count = 1;
     return out;
   }
@@ -486,7 +495,7 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
   if (out.count == 0) {
     unsigned deepest = 0;
     out.points[0] = find_witness_point(p, q, f, out.depth, deepest);
-    out.separations[0] = -out.depth;
+    store_separations(out.separations, -out.depth, out.separations[1]);
     store_ids(out.ids, face_point_id(f, deepest), out.ids[1]);
     out.count = 1;
   }
@@ -554,7 +563,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   out.overlapping = false;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
-  out.separations[0] = gap;
+  store_separations(out.separations, gap, out.separations[1]);
   store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
   out.count = 1;
   return out;

@@ -263,17 +263,14 @@ template <Scalar T>
   const Calc dist = plain ? std::sqrt(d2) : norm_of(d);
   CoreContact out;
   out.count = 1;
-  if (sign > 0) {
-    out.overlapping = false;
-    out.separations[0] = std::max(Calc(0), dist - ra - rb);
-    if (!(out.separations[0] <= speculative)) return std::nullopt;
-  } else {
-    out.separations[0] = dist - ra - rb;
-  }
+  out.overlapping = !(sign > 0);
+  const Calc separation = out.overlapping ? dist - ra - rb : std::max(Calc(0), dist - ra - rb);
+  if (!out.overlapping && !(separation <= speculative)) return std::nullopt;
+  store_separations(out.separations, separation, 0);
   if (dist > band_of(s)) {
     out.normal = plain ? Vec2c(d / dist) : unit_of(d);
-    out.depth = std::max(Calc(0), -out.separations[0]);
-    out.points[0] = ca + out.normal * (ra + out.separations[0] * 0.5);
+    out.depth = std::max(Calc(0), -separation);
+    out.points[0] = ca + out.normal * (ra + separation * 0.5);
   } else {
     if (sign <= 0) {
       out.depth = ra + rb;
@@ -344,7 +341,7 @@ template <Scalar T>
   out.normal = n;
   out.depth = std::max(Calc(0), radii - along);
   out.points[0] = ((c + n * ra) + (on_q - n * rb)) * 0.5;
-  out.separations[0] = along - radii;
+  store_separations(out.separations, along - radii, 0);
   store_ids(out.ids, id_of(CoreFeature{0, false}, feature), FeatureId{});
   out.count = 1;
   return out;
@@ -413,7 +410,7 @@ inline CoreContact circle_contact_from_closest(const Vec2c& c, Calc r, const Vec
   const Calc along = feature.edge ? dq.dot(out.normal) : dist;
   out.depth = std::max(Calc(0), r - along);
   out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
-  out.separations[0] = along - r;
+  store_separations(out.separations, along - r, 0);
   store_ids(out.ids, id_of(CoreFeature{0, false}, feature), FeatureId{});
   return out;
 }
@@ -426,7 +423,7 @@ inline CoreContact circle_contact_inside(const Vec2c& c, Calc r, const Vec2c& n,
   out.normal = -n;
   out.depth = std::max(Calc(0), r - excess);
   out.points[0] = c + n * ((-excess - r) * 0.5);
-  out.separations[0] = excess - r;
+  store_separations(out.separations, excess - r, 0);
   store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
   return out;
 }
@@ -600,7 +597,7 @@ template <Scalar T, class B>
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
       store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{corner, false}), FeatureId{});
       out.normal = direction_of(dq, dist);
-      out.separations[0] = out.overlapping ? gap : std::max(gap, Calc(0));
+      store_separations(out.separations, out.overlapping ? gap : std::max(gap, Calc(0)), 0);
       out.depth = std::max(Calc(0), -out.separations[0]);
       out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
       return out;
@@ -624,7 +621,7 @@ template <Scalar T, class B>
   const Vec2c n_face = (along_w ? w : v) * (positive ? inv : -inv);
   const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
-  out.separations[0] = out.overlapping ? e - r : std::max(e - r, Calc(0));
+  store_separations(out.separations, out.overlapping ? e - r : std::max(e - r, Calc(0)), 0);
   out.depth = std::max(Calc(0), -out.separations[0]);
   out.points[0] = c + n_face * ((-e - r) * 0.5);
   store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
