@@ -10,6 +10,10 @@
 #include <cstddef>
 #include <cstdint>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace collide {
 
 namespace detail {
@@ -325,7 +329,14 @@ inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept {
 
 /// Left perpendicular (rotated +90 degrees).
 inline Vec2c perp(const Vec2c& v) noexcept {
+#if defined(__SSE2__)
+  const __m128d p = _mm_loadu_pd(v.data());
+  Vec2c out;
+  _mm_storeu_pd(out.data(), _mm_xor_pd(_mm_shuffle_pd(p, p, 1), _mm_set_pd(0.0, -0.0)));
+  return out;
+#else
   return {-v.y(), v.x()};
+#endif
 }
 
 /// Exact widening of a stored vector into the computation type.
