@@ -119,7 +119,7 @@ bool hull_of(const Obb<T>& s, Hull& h) {
   const Vec2c ex = w * Calc(s.half_extents().x()), ey = perp(w) * Calc(s.half_extents().y());
   h.push_all(std::array<Vec2c, 4>{c - ex - ey, c + ex - ey, c + ex + ey, c - ex + ey});
   const Calc ww = w.squaredNorm();  // within a few eps_T of 1
-  const Vec2c u = w / std::sqrt(ww), v = perp(u);
+  const Vec2c u = w * inverse_norm_near_unit(ww), v = perp(u);
   h.own_normals = {Vec2c(-v), u, v, Vec2c(-u)};
   h.own = true;
   return true;
