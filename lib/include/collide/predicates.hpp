@@ -330,6 +330,7 @@ inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept {
 /// Left perpendicular (rotated +90 degrees).
 inline Vec2c perp(const Vec2c& v) noexcept {
 #if defined(__SSE2__)
+  // One shuffle and a sign flip: built from two scalars, the vector went through the stack.
   const __m128d p = _mm_loadu_pd(v.data());
   Vec2c out;
   _mm_storeu_pd(out.data(), _mm_xor_pd(_mm_shuffle_pd(p, p, 1), _mm_set_pd(0.0, -0.0)));
