@@ -597,9 +597,10 @@ template <Scalar T, class B>
       const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
       store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{corner, false}), FeatureId{});
       out.normal = direction_of(dq, dist);
-      store_separations(out.separations, out.overlapping ? gap : std::max(gap, Calc(0)), 0);
-      out.depth = std::max(Calc(0), -out.separations[0]);
-      out.points[0] = c + out.normal * (r + out.separations[0] * 0.5);
+      const Calc separation = out.overlapping ? gap : std::max(gap, Calc(0));
+      store_separations(out.separations, separation, 0);
+      out.depth = std::max(Calc(0), -separation);
+      out.points[0] = c + out.normal * (r + separation * 0.5);
       return out;
     }
   } else if (ex > 0 || ey > 0) {
@@ -621,8 +622,9 @@ template <Scalar T, class B>
   const Vec2c n_face = (along_w ? w : v) * (positive ? inv : -inv);
   const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
   out.normal = -n_face;
-  store_separations(out.separations, out.overlapping ? e - r : std::max(e - r, Calc(0)), 0);
-  out.depth = std::max(Calc(0), -out.separations[0]);
+  const Calc separation = out.overlapping ? e - r : std::max(e - r, Calc(0));
+  store_separations(out.separations, separation, 0);
+  out.depth = std::max(Calc(0), -separation);
   out.points[0] = c + n_face * ((-e - r) * 0.5);
   store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
   return out;
