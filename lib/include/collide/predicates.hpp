@@ -327,14 +327,21 @@ inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept {
   return a.x() * b.y() - a.y() * b.x();
 }
 
+#if defined(__SSE2__)
+/// The vector in an SSE2 register (the store and the caller's loads become register moves).
+inline Vec2c vec_of(__m128d r) noexcept {
+  Vec2c out;
+  _mm_storeu_pd(out.data(), r);
+  return out;
+}
+#endif
+
 /// Left perpendicular (rotated +90 degrees).
 inline Vec2c perp(const Vec2c& v) noexcept {
 #if defined(__SSE2__)
   // One shuffle and a sign flip: built from two scalars, the vector went through the stack.
   const __m128d p = _mm_loadu_pd(v.data());
-  Vec2c out;
-  _mm_storeu_pd(out.data(), _mm_xor_pd(_mm_shuffle_pd(p, p, 1), _mm_set_pd(0.0, -0.0)));
-  return out;
+  return vec_of(_mm_xor_pd(_mm_shuffle_pd(p, p, 1), _mm_set_pd(0.0, -0.0)));
 #else
   return {-v.y(), v.x()};
 #endif

@@ -268,7 +268,7 @@ template <Scalar T>
   if (!out.overlapping && !(separation <= speculative)) return std::nullopt;
   store_separations(out.separations, separation, 0);
   if (dist > band_of(s)) {
-    out.normal = plain ? Vec2c(d / dist) : unit_of(d);
+    out.normal = quotient_or_unit(d, dist, plain);
     out.depth = std::max(Calc(0), -separation);
     out.points[0] = ca + out.normal * (ra + separation * 0.5);
   } else {

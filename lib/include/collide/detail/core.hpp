@@ -12,6 +12,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <span>
 #include <vector>
 
@@ -367,19 +370,42 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 /// v / |v| (see norm_of); the zero vector for a zero v.
 [[gnu::always_inline]] inline Vec2c unit_of(const Vec2c& v) noexcept {
   const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
+#if defined(__SSE2__)
+  // The choice is made between registers: between a quotient in registers and unit_of_scaled()'s
+  // result in memory, the compiler keeps the chosen vector in memory, and every later use of it
+  // waits on the store.
+  __m128d r;
+  if (!(m > 0)) {
+    r = _mm_setzero_pd();
+  } else if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]] {
+    r = _mm_div_pd(_mm_loadu_pd(v.data()), _mm_set1_pd(v.norm()));
+  } else {
+    r = _mm_loadu_pd(unit_of_scaled(v, m).data());
+  }
+  return vec_of(r);
+#else
   if (!(m > 0)) return Vec2c::Zero();
   if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
     return v / v.norm();
   return unit_of_scaled(v, m);
+#endif
+}
+
+/// d / dist where plain, else unit_of(d), chosen between registers as unit_of() chooses.
+[[gnu::always_inline]] inline Vec2c quotient_or_unit(const Vec2c& d, Calc dist, bool plain) noexcept {
+#if defined(__SSE2__)
+  const __m128d r = plain ? _mm_div_pd(_mm_loadu_pd(d.data()), _mm_set1_pd(dist)) : _mm_loadu_pd(unit_of(d).data());
+  return vec_of(r);
+#else
+  return plain ? Vec2c(d / dist) : unit_of(d);
+#endif
 }
 
 /// unit_of(d) given dist = norm_of(d), bit for bit, without a second square root (always inlined:
 /// a call spills the caller's registers around the division it waits on).
 [[gnu::always_inline]] inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
   const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
-  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
-    return d / dist;
-  return unit_of(d);
+  return quotient_or_unit(d, dist, m >= kPlainNormLow && m <= kPlainNormHigh);
 }
 
 /// max over the core of x . n
