@@ -5,11 +5,12 @@
 /// Coordinates come from small integers times a power of two (exact dyadic values that shrink
 /// toward 0): RapidCheck's own double generator never produces the values that matter here.
 /// A pair is placed on purpose: separated, exactly touching along an axis (extreme points
-/// aligned), touching nudged by a few ulps either way, overlapping, or one shape shrunk inside
-/// the other; then the pair is turned by quarter turns. Shapes are sometimes tiny (2^-20) or huge
-/// (2^20), sometimes far from the origin (about 1e6), slivers (zero width, zero radius, thin
-/// triangles) and near-parallel edges (axes like (64, 1)). The kind of each shape is chosen
-/// through the registry (visit_kind).
+/// aligned), a circle touching a face of the other shape, turned faces included (up to the
+/// rounding of its centre), touching nudged by a few ulps either way, overlapping, or one shape
+/// shrunk inside the other; then the pair is turned by quarter turns. Shapes are sometimes tiny
+/// (2^-20) or huge (2^20), sometimes far from the origin (about 1e6), slivers (zero width, zero
+/// radius, thin triangles) and near-parallel edges (axes like (64, 1)). The kind of each shape is
+/// chosen through the registry (visit_kind).
 
 #include "collide/collide.hpp"
 #include "collide/laws/codec.hpp"
@@ -276,6 +277,44 @@ T ulp_at(double m) {
 /// How the second shape is placed against the first.
 enum class Placement { Separated, Touching, Nudged, Overlapping, Contained };
 
+/// The move that takes a circle's centre to the point of radius_sum beyond a face of a core (at
+/// one of the eighths along it), outward: touching a turned face up to the rounding of the centre
+/// to T, which no alignment of extreme points reaches (a turned box's extreme points are corners).
+/// nullopt for a core without a face of nonzero length.
+template <Scalar T>
+std::optional<Vec2<T>> toward_face(const ::collide::detail::Core& core, const Vec2c& centre, double radius_sum) {
+  const std::size_t n = core.size();
+  if (n < 2) return std::nullopt;
+  const std::size_t i = std::size_t(*rc::gen::inRange(0, int(n)));
+  const Vec2c p = core[i], q = core[(i + 1) % n], e = q - p;
+  if (!(e.norm() > 0)) return std::nullopt;
+  Vec2c normal = Vec2c(e.y(), -e.x()) / e.norm();
+  const Vec2c at = p + e * (grid(1, 7) / 8);
+  Vec2c middle = Vec2c::Zero();
+  for (const Vec2c& v : core.pts()) middle += v;
+  middle /= double(n);
+  // Outward: away from the vertices' mean (either side of a segment).
+  const double side = normal.dot(at - middle);
+  if (side < 0 || (side == 0 && *rc::gen::arbitrary<bool>())) normal = -normal;
+  const Vec2c t = at + normal * (core.radius + radius_sum) - centre;
+  return Vec2<T>(T(t.x()), T(t.y()));
+}
+
+/// The move of mover that puts a circle on a face of the other shape (toward_face): the circle
+/// mover onto a face of fixed, or mover moved back by as much as a circle fixed would move onto
+/// mover's face. nullopt when neither is a circle or the other has no face.
+template <Scalar T>
+std::optional<Vec2<T>> circle_onto_face(const Shape<T>& fixed, const Shape<T>& mover) {
+  if (const auto* c = std::get_if<Circle<T>>(&mover)) {
+    return toward_face<T>(first_core(fixed), widen(c->center()), c->radius());
+  }
+  if (const auto* c = std::get_if<Circle<T>>(&fixed)) {
+    const std::optional<Vec2<T>> onto = toward_face<T>(first_core(mover), widen(c->center()), c->radius());
+    if (onto) return Vec2<T>(-*onto);
+  }
+  return std::nullopt;
+}
+
 /// A pair of kinds (A, B) placed on purpose (see the file comment); `only` restricts the placement
 /// (the touching law asks for touching and nudged pairs only).
 template <Scalar T>
@@ -297,6 +336,13 @@ std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional
   if (place == Placement::Contained) {
     const Vec2c target = inner_point(fixed), from = inner_point(mover);
     t = V(T(target.x() - from.x()), T(target.y() - from.y()));
+  } else if (const std::optional<V> onto =
+                 (place == Placement::Touching || place == Placement::Nudged) && *rc::gen::arbitrary<bool>()
+                     ? circle_onto_face<T>(fixed, mover)
+                     : std::nullopt) {
+    t = *onto;
+    if (place == Placement::Nudged)
+      t.x() += T(*rc::gen::inRange(-4, 5)) * ulp_at<T>(extreme_x(fixed, +1).cwiseAbs().maxCoeff());
   } else {
     const Vec2c xa = extreme_x(fixed, +1), xb = extreme_x(mover, -1);
     t = V(T(xa.x() - xb.x()), T(xa.y() - xb.y()));

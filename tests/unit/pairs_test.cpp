@@ -7,6 +7,7 @@
 #include "support.hpp"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace collide::test {
@@ -168,6 +169,54 @@ TEST(Pairs, PointCapsuleMeetsSegmentCapsuleBySegmentDistance) {
   EXPECT_TRUE(overlaps(seg, dot));
   EXPECT_TRUE(overlaps(dot, seg));
   EXPECT_FALSE(overlaps(seg, Capsule<double>(V(0, std::nextafter(3.0, 4.0)), V(0, std::nextafter(3.0, 4.0)), 2)));
+}
+
+// A box whose face lies on a turned box's rightmost corner, within the rounding of that box's
+// computed bounding box: the rounded box can end an ulp short of the exact corner, and the pair,
+// overlapping exactly, must keep its contact (the test of boxes apart allows for that rounding).
+TEST(Pairs, BoxOnATurnedBoxCornerBeyondItsRoundedBoundsHasAContact) {
+  using V = Vec2<double>;
+  int beyond = 0;
+  for (int k = 1; k <= 4000 && beyond < 20; ++k) {
+    const Obb<double> turned =
+        Obb<double>::make(V(0, k * 0.37), V(1.3 + k * 1e-3, 0.7 + k * 3e-4), 0.3 + k * 1e-3).value();
+    const double hi = detail::rough_box(turned).hi.x(),
+                 lo = std::nextafter(hi, std::numeric_limits<double>::infinity());
+    const Aabb<double> box(V(lo, turned.center().y() - 16), V(lo + 1, turned.center().y() + 16));
+    if (!overlaps(turned, box)) continue;  // the rounded bound was not short of the corner
+    ++beyond;
+    EXPECT_TRUE(contact(turned, box).has_value()) << "k = " << k;
+    EXPECT_TRUE(contact(box, turned).has_value()) << "k = " << k;
+  }
+  // Configurations where the rounding falls short exist, or the test proves nothing.
+  EXPECT_GT(beyond, 0);
+}
+
+// A float circle just inside a turned box's face, where the box's stored axis (rounded from a unit
+// vector) is longer than 1: the excess over the face, measured in units of that length, exceeds
+// the radius for circles overlapping by less than radius * (|axis| - 1), and those must keep their
+// contact (the test of a circle beyond a box's face scales its reach by the axis' length).
+TEST(Pairs, CircleJustInsideATurnedBoxFaceHasAContact) {
+  using V = Vec2<float>;
+  const Obb<float> box = Obb<float>::make_with_axis(V(0, 0), V(2, 1), V(3, 4)).value();
+  const Vec2c w = widen(box.axis());
+  const double len = w.norm();
+  ASSERT_GT(len, 1.0) << "the stored axis must be longer than 1 for this test to mean anything";
+  const Vec2c u = w / len, v(-u.y(), u.x());
+  int within = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const float r = 0.5f + float(k) * 1e-3f;
+    const double t = (double(k % 200) / 100 - 1) * 0.9;  // along the face, inside its ends
+    const Vec2c centre = w * 2.0 + v * (t * len) + u * double(r);
+    const Circle<float> circle(centre.cast<float>(), r);
+    const bool overlapping = overlaps(circle, box);
+    EXPECT_EQ(contact(circle, box).has_value(), overlapping) << "k = " << k;
+    EXPECT_EQ(contact(box, circle).has_value(), overlapping) << "k = " << k;
+    // The centre's distance beyond the face line (the rounded centre's, in double).
+    const double excess = widen(circle.center()).dot(u) - 2 * len;
+    if (overlapping && excess > double(r) / len + 1e-12) ++within;
+  }
+  EXPECT_GT(within, 0) << "no circle fell between radius / |axis| and the radius";
 }
 
 // The registration covered the whole registry (a for_each_pair that skipped pairs would show).
