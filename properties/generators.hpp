@@ -277,26 +277,20 @@ T ulp_at(double m) {
 /// How the second shape is placed against the first.
 enum class Placement { Separated, Touching, Nudged, Overlapping, Contained };
 
-/// The move that takes a circle's centre to the point of radius_sum beyond a face of a core (at
-/// one of the eighths along it), outward: touching a turned face up to the rounding of the centre
-/// to T, which no alignment of extreme points reaches (a turned box's extreme points are corners).
-/// nullopt for a core without a face of nonzero length.
+/// The move that takes a circle's centre to the point of radius_sum beyond a face of a core (one
+/// of the library's faces, for_each_face, at one of the eighths along it): touching a turned face
+/// up to the rounding of the centre to T, which no alignment of extreme points reaches (a turned
+/// box's extreme points are corners). nullopt for a core without a face.
 template <Scalar T>
 std::optional<Vec2<T>> toward_face(const ::collide::detail::Core& core, const Vec2c& centre, double radius_sum) {
-  const std::size_t n = core.size();
-  if (n < 2) return std::nullopt;
-  const std::size_t i = std::size_t(*rc::gen::inRange(0, int(n)));
-  const Vec2c p = core[i], q = core[(i + 1) % n], e = q - p;
-  if (!(e.norm() > 0)) return std::nullopt;
-  Vec2c normal = Vec2c(e.y(), -e.x()) / e.norm();
-  const Vec2c at = p + e * (grid(1, 7) / 8);
-  Vec2c middle = Vec2c::Zero();
-  for (const Vec2c& v : core.pts()) middle += v;
-  middle /= double(n);
-  // Outward: away from the vertices' mean (either side of a segment).
-  const double side = normal.dot(at - middle);
-  if (side < 0 || (side == 0 && *rc::gen::arbitrary<bool>())) normal = -normal;
-  const Vec2c t = at + normal * (core.radius + radius_sum) - centre;
+  std::vector<std::pair<Vec2c, unsigned>> faces;
+  ::collide::detail::for_each_face(core, [&](const Vec2c& n, unsigned i) { faces.emplace_back(n, i); });
+  if (faces.empty()) return std::nullopt;
+  const auto [normal, i] = *rc::gen::elementOf(faces);
+  // A segment's two faces both run along it.
+  const Vec2c p = core.size() == 2 ? core[0] : core[i],
+              q = core.size() == 2 ? core[1] : core[::collide::detail::next_index(i, core.size())];
+  const Vec2c t = p + (q - p) * (grid(1, 7) / 8) + normal * (core.radius + radius_sum) - centre;
   return Vec2<T>(T(t.x()), T(t.y()));
 }
 
