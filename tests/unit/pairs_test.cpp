@@ -192,31 +192,90 @@ TEST(Pairs, BoxOnATurnedBoxCornerBeyondItsRoundedBoundsHasAContact) {
   EXPECT_GT(beyond, 0);
 }
 
-// A float circle just inside a turned box's face, where the box's stored axis (rounded from a unit
-// vector) is longer than 1: the excess over the face, measured in units of that length, exceeds
-// the radius for circles overlapping by less than radius * (|axis| - 1), and those must keep their
-// contact (the test of a circle beyond a box's face scales its reach by the axis' length).
-TEST(Pairs, CircleJustInsideATurnedBoxFaceHasAContact) {
+// Float circles just within reach of a turned box's face, where the box's stored axis (rounded
+// from a unit vector) is longer than 1. The reach is the radius, or the radius plus a speculative
+// distance. Measured in units of the axis' length, the excess over the face exceeds the reach for
+// circles within reach by less than reach * (|axis| - 1), and those must keep their contact (the
+// test of a circle beyond a box's face scales its reach by the axis' length). A speculative
+// decision is on the rounded gap, so only gaps short of the distance by more than the rounding
+// tolerance are asked about.
+void check_circles_within_reach_of_a_turned_box_face(double speculative) {
   using V = Vec2<float>;
   const Obb<float> box = Obb<float>::make_with_axis(V(0, 0), V(2, 1), V(3, 4)).value();
   const Vec2c w = widen(box.axis());
   const double len = w.norm();
   ASSERT_GT(len, 1.0) << "the stored axis must be longer than 1 for this test to mean anything";
   const Vec2c u = w / len, v(-u.y(), u.x());
-  int within = 0;
+  int asked = 0, stretched = 0;
   for (int k = 0; k < 4000; ++k) {
     const float r = 0.5f + float(k) * 1e-3f;
     const double t = (double(k % 200) / 100 - 1) * 0.9;  // along the face, inside its ends
-    const Vec2c centre = w * 2.0 + v * (t * len) + u * double(r);
+    const Vec2c centre = w * 2.0 + v * (t * len) + u * (double(r) + speculative);
     const Circle<float> circle(centre.cast<float>(), r);
-    const bool overlapping = overlaps(circle, box);
-    EXPECT_EQ(contact(circle, box).has_value(), overlapping) << "k = " << k;
-    EXPECT_EQ(contact(box, circle).has_value(), overlapping) << "k = " << k;
+    if (speculative == 0) {
+      const bool overlapping = overlaps(circle, box);
+      EXPECT_EQ(contact(circle, box).has_value(), overlapping) << "k = " << k;
+      EXPECT_EQ(contact(box, circle).has_value(), overlapping) << "k = " << k;
+      if (!overlapping) continue;
+    } else {
+      const double gap = distance(circle, box);
+      if (!(gap < speculative - 4 * rounding_tolerance(circle, box))) continue;
+      EXPECT_TRUE(contact(circle, box, speculative).has_value()) << "k = " << k << ", gap " << gap;
+      EXPECT_TRUE(contact(box, circle, speculative).has_value()) << "k = " << k << ", gap " << gap;
+    }
+    ++asked;
     // The centre's distance beyond the face line (the rounded centre's, in double).
     const double excess = widen(circle.center()).dot(u) - 2 * len;
-    if (overlapping && excess > double(r) / len + 1e-12) ++within;
+    if (excess > (double(r) + speculative) / len + 1e-12) ++stretched;
   }
-  EXPECT_GT(within, 0) << "no circle fell between radius / |axis| and the radius";
+  EXPECT_GT(asked, 0) << "no circle fell within reach";
+  EXPECT_GT(stretched, 0) << "no circle fell between reach / |axis| and the reach";
+}
+TEST(Pairs, CircleJustInsideATurnedBoxFaceHasAContact) {
+  check_circles_within_reach_of_a_turned_box_face(0);
+}
+TEST(Pairs, CircleJustWithinSpeculativeReachOfATurnedBoxFaceHasAContact) {
+  check_circles_within_reach_of_a_turned_box_face(0.25);
+}
+
+// Circles straddling a turned box's face by about a rounding, at scales from 2^-100 to 2^100: a
+// pair the quick test before the contact tells apart must be apart exactly (float shapes are told
+// apart in float, double shapes in double). Some of the overlapping ones have a computed excess
+// over the face beyond the radius; those keep their contact only through the test's allowance for
+// rounding (the float test's margin, the double test's band).
+template <Scalar T>
+void check_circles_at_a_turned_box_face() {
+  using V = Vec2<T>;
+  int saved_by_allowance = 0, apart = 0;
+  for (const T s : {T(1), T(0x1p40), T(0x1p-40), T(0x1p100), T(0x1p-100)}) {
+    const Obb<T> box = Obb<T>::make(V(3 * s, -5 * s), V(2 * s, s), T(0.9)).value();
+    const Vec2c c = widen(box.center()), w = widen(box.axis());
+    const double len = w.norm();
+    const Vec2c u = w / len, v(-u.y(), u.x());
+    for (int k = 0; k < 2000; ++k) {
+      const T r = s * (T(0.5) + T(k) * T(1e-3));
+      const double t = (double(k % 200) / 100 - 1) * 0.9;  // along the face, inside its ends
+      const Vec2c centre = c + u * (2.0 * double(s) * len + double(r)) + v * (t * double(s) * len);
+      const Circle<T> circle(centre.cast<T>(), r);
+      const bool overlapping = overlaps(circle, box);
+      EXPECT_EQ(contact(circle, box).has_value(), overlapping) << "scale " << s << ", k = " << k;
+      EXPECT_EQ(contact(box, circle).has_value(), overlapping) << "scale " << s << ", k = " << k;
+      apart += !overlapping;
+      // The excess over the face in T's arithmetic, in units of |axis|.
+      const T dx = circle.center().x() - box.center().x(), dy = circle.center().y() - box.center().y();
+      const T wx = box.axis().x(), wy = box.axis().y();
+      const T excess = std::fabs(dx * wx + dy * wy) - box.half_extents().x() * (wx * wx + wy * wy);
+      if (overlapping && excess > r * std::max(wx * wx + wy * wy, T(1))) ++saved_by_allowance;
+    }
+  }
+  EXPECT_GT(apart, 0) << "no circle fell beyond the face: the placements miss the boundary";
+  EXPECT_GT(saved_by_allowance, 0) << "no overlapping circle had a computed excess beyond its radius";
+}
+TEST(Pairs, FloatCircleAtATurnedBoxFaceIsToldApartOnlyWhenApart) {
+  check_circles_at_a_turned_box_face<float>();
+}
+TEST(Pairs, DoubleCircleAtATurnedBoxFaceIsToldApartOnlyWhenApart) {
+  check_circles_at_a_turned_box_face<double>();
 }
 
 // The registration covered the whole registry (a for_each_pair that skipped pairs would show).

@@ -126,6 +126,11 @@ inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 /// are exact and have no tolerance.
 inline constexpr Calc kOverlapErrorFactor = 64.0;
 
+/// Roundings of float's unit roundoff (2^-24), per unit of the pair's size, that a test computed
+/// in float keeps between its answer and the boundary (detail::circle_beyond_box_in_float: 9
+/// needed).
+inline constexpr float kFloatFilterRoundings = 16.0f;
+
 /// Shape casts and time of impact (cast.hpp, time_of_impact.hpp): conservative advancement stops
 /// when the computed gap is within twice its target separation, target = this factor * 2^-53 * M
 /// + kAbsoluteFloor, M being the motion's scale (the largest coordinate the moving shapes reach).

@@ -557,17 +557,46 @@ inline bool circle_beyond_rect(const Vec2c& c, Calc r, const Rect& k, Calc specu
   return std::max(std::fabs(sw) - k.hx * ww, std::fabs(tw) - k.hy * ww) > reach * std::max(ww, Calc(1));
 }
 
+/// Whether a float circle lies beyond a face of a float box by more than its radius, told in
+/// float arithmetic (what circle_beyond_rect() tells in double, without the conversions). With
+/// s, t the centre's offset along w and perp(w) times |w|, the excess over a face is
+/// (|s| - h_x |w|^2) / |w|; the test asks max(|s| - h_x |w|^2, |t| - h_y |w|^2) > r + margin.
+/// In roundings of 2^-24 of S = |dx| + |dy| + h_x + h_y + r, the computed maximum lies within 4
+/// of the exact one, r |w| within 4 of r (a stored axis has | |w|^2 - 1 | <= 2^-21) and the sum
+/// r + margin rounds by 1: a margin of kFloatFilterRoundings (16) of them, plus 2^-100 for
+/// products that underflow, proves the exact excess beyond r |w|. Nothing overflows but S itself,
+/// which makes the margin infinite: stored values are at most 2^125 (max_magnitude) and |w| is
+/// about 1.
+inline bool circle_beyond_box_in_float(const Circle<float>& a, const Obb<float>& b) noexcept {
+  const float dx = a.center().x() - b.center().x(), dy = a.center().y() - b.center().y();
+  const float wx = b.axis().x(), wy = b.axis().y(), hx = b.half_extents().x(), hy = b.half_extents().y();
+  const float r = a.radius(), ww = wx * wx + wy * wy;
+  const float sw = dx * wx + dy * wy, tw = dx * wy - dy * wx;
+  const float size = std::fabs(dx) + std::fabs(dy) + hx + hy + r;
+  const float margin = kFloatFilterRoundings * 0x1p-24f * size + 0x1p-100f;
+  return std::max(std::fabs(sw) - hx * ww, std::fabs(tw) - hy * ww) > r + margin;
+}
+/// The same for an AABB, exactly: rounding is monotone and r a float, so a computed difference
+/// beyond r is an exact one beyond r.
+inline bool circle_beyond_box_in_float(const Circle<float>& a, const Aabb<float>& b) noexcept {
+  const float cx = a.center().x(), cy = a.center().y();
+  const float ex = std::max(b.min().x() - cx, cx - b.max().x()), ey = std::max(b.min().y() - cy, cy - b.max().y());
+  return std::max(ex, ey) > a.radius();
+}
+
 /// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
 /// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
 /// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
-/// is not proper (see is_proper) takes the generic path unless the centre is clearly beyond a face.
-/// scale: rect_scale() of the pair, which the caller found not apart by circle_beyond_rect() when
-/// at least kTinyCore. Kept out of line, so that that test inlines into the caller.
+/// is not proper (see is_proper) takes the generic path. Correct for every pair; the caller rules
+/// out most pairs apart first (circle_beyond_rect(), circle_beyond_box_in_float()). Kept out of
+/// line, so that those tests inline into the caller; the box's Rect is taken here again, not
+/// passed: read back right after the caller's stores, a passed one waits on them.
 template <Scalar T, class B>
-[[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, const Rect& k,
-                                                                 Calc scale, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, Calc speculative) {
   const Vec2c c = widen(a.center());
   const Calc r = a.radius();
+  const Rect k = rect_of(b);
+  const Calc scale = rect_scale(c, r, k);
   // Whether the box is proper is asked here, out of line, so that the test for apart pairs before
   // the call does not compute it.
   if (!(scale >= kTinyCore) || !is_proper(b, k)) return contact_generic(a, b, speculative);
@@ -789,12 +818,18 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
   if constexpr ((circle_a || is_hull_kind_v<A>)&&is_hull_kind_v<B>) {
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
-      // Boxes flat on an axis or thinner than their rounding take the generic path.
+      // Float shapes without a speculative distance are told apart in float, at T's own precision.
+      if constexpr (std::is_same_v<scalar_of_t<A>, float>) {
+        if (!(speculative > 0)) {
+          if (circle_beyond_box_in_float(a, b)) return std::nullopt;
+          return contact_circle_rect(a, b, speculative);
+        }
+      }
       const Rect k = rect_of(b);
       const Vec2c c = widen(a.center());
       const Calc scale = rect_scale(c, a.radius(), k);
       if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
-      return contact_circle_rect(a, b, k, scale, speculative);
+      return contact_circle_rect(a, b, speculative);
     } else if constexpr (circle_a) {
       if (PolygonAccess::normals(b)) {
         std::array<Calc, ConvexPolygon<scalar_of_t<A>>::kInline> excesses;
