@@ -261,7 +261,7 @@ void check_circles_at_a_turned_box_face() {
       EXPECT_EQ(contact(circle, box).has_value(), overlapping) << "scale " << s << ", k = " << k;
       EXPECT_EQ(contact(box, circle).has_value(), overlapping) << "scale " << s << ", k = " << k;
       apart += !overlapping;
-      // The excess over the face in T's arithmetic, in units of |axis|.
+      // The excess over the face times |axis|, computed in T as the quick tests compute it.
       const T dx = circle.center().x() - box.center().x(), dy = circle.center().y() - box.center().y();
       const T wx = box.axis().x(), wy = box.axis().y();
       const T excess = std::fabs(dx * wx + dy * wy) - box.half_extents().x() * (wx * wx + wy * wy);
