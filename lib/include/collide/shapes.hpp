@@ -21,6 +21,10 @@
 #include <variant>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace collide {
 
 namespace detail {
@@ -79,6 +83,17 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
   return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
+/// sqrt(x) for x >= 0, the same correctly rounded value, by the instruction alone: std::sqrt also
+/// checks for a negative x to set errno, through a library call that gives its caller a stack
+/// frame.
+[[gnu::always_inline]] inline Calc square_root(Calc x) noexcept {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
+#else
+  return std::sqrt(x);
+#endif
+}
+
 /// 1 / sqrt(ww) for the squared length ww of a stored rotation (within a few roundings of T of
 /// 1): for |ww - 1| <= 2^-18 by its series about 1 to the second order (the rest is below
 /// 2^-55, so the value is within about one rounding of double, as the square root and division
@@ -87,7 +102,7 @@ inline Calc inverse_norm_near_unit(Calc ww) noexcept {
   const Calc e = ww - 1;  // exact near 1
   if (std::fabs(e) <= 0x1p-18) [[likely]]
     return 1 + e * (Calc(0.375) * e - Calc(0.5));
-  return 1 / std::sqrt(ww);
+  return 1 / square_root(ww);
 }
 
 /// The unit outward normal of a counter-clockwise polygon's edge from a to b, computed in double

@@ -244,13 +244,19 @@ std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculat
   return contact_of_cores(a, b, p, nullptr, q, nullptr, point_scale(p, q), speculative);
 }
 
+/// The separation of circles of radii ra and rb whose centres are dist apart: negative when they
+/// overlap, else at least 0 (a rounded gap of shapes apart is not let below it).
+[[gnu::always_inline]] inline Calc circles_separation(bool overlapping, Calc dist, Calc ra, Calc rb) noexcept {
+  return overlapping ? dist - ra - rb : std::max(Calc(0), dist - ra - rb);
+}
+
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
-/// centres (within rounding) give normal (1, 0), as contact_cores() does.
-/// sign: filtered_sign_dist2() of the pair (kept out of line, so that the filter before it
-/// inlines into the caller).
+/// centres (within rounding) give normal (1, 0), as contact_cores() does. Every case;
+/// contact_circles() takes the common one first.
+/// sign: filtered_sign_dist2() of the pair, 2 when it could not tell.
 template <Scalar T>
-[[gnu::noinline]] std::optional<CoreContact> contact_circles(const Circle<T>& a, const Circle<T>& b, int sign,
-                                                             Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_circles_in_general(const Circle<T>& a, const Circle<T>& b,
+                                                                        int sign, Calc speculative) {
   const Vec2c ca = widen(a.center()), cb = widen(b.center());
   const Calc ra = a.radius(), rb = b.radius();
   const Vec2c d = cb - ca;
@@ -264,7 +270,7 @@ template <Scalar T>
   CoreContact out;
   out.count = 1;
   out.overlapping = !(sign > 0);
-  const Calc separation = out.overlapping ? dist - ra - rb : std::max(Calc(0), dist - ra - rb);
+  const Calc separation = circles_separation(out.overlapping, dist, ra, rb);
   if (!out.overlapping && !(separation <= speculative)) return std::nullopt;
   store_separations(out.separations, separation, 0);
   if (dist > band_of(s)) {
@@ -279,6 +285,36 @@ template <Scalar T>
     out.points[0] = (ca + cb) * 0.5 + out.normal * ((ra - rb) * 0.5);
   }
   return out;
+}
+
+/// contact_circles_in_general(), bit for bit, with the common case in one straight line: circles
+/// overlapping for certain, their centres apart by more than the band and their squared distance
+/// free of underflow and overflow. Kept out of line (so that the filter before it inlines into
+/// the caller) and apart from the general steps, whose calls would give it a stack frame.
+template <Scalar T>
+[[gnu::noinline]] std::optional<CoreContact> contact_circles(const Circle<T>& a, const Circle<T>& b, int sign,
+                                                             Calc speculative) {
+  if (sign < 0) {
+    const Vec2c ca = widen(a.center()), cb = widen(b.center());
+    const Calc ra = a.radius(), rb = b.radius();
+    const Vec2c d = cb - ca;
+    const Calc s = std::max(ca.cwiseAbs().maxCoeff(), cb.cwiseAbs().maxCoeff());
+    const Calc d2 = d.squaredNorm();
+    if (d2 > kUnderflowMargin && d2 < kOverflowMargin && s >= kTinyCore) {
+      const Calc dist = square_root(d2);
+      if (dist > band_of(s)) [[likely]] {
+        CoreContact out;
+        out.count = 1;
+        const Calc separation = circles_separation(true, dist, ra, rb);
+        store_separations(out.separations, separation, 0);
+        out.normal = quotient_or_unit(d, dist, true);
+        out.depth = std::max(Calc(0), -separation);
+        out.points[0] = ca + out.normal * (ra + separation * 0.5);
+        return out;
+      }
+    }
+  }
+  return contact_circles_in_general(a, b, sign, speculative);
 }
 template <Scalar T>
 std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
@@ -584,13 +620,130 @@ inline bool circle_beyond_box_in_float(const Circle<float>& a, const Aabb<float>
   return std::max(ex, ey) > a.radius();
 }
 
+/// A circle's centre in a box's frame (the steps of contact_circle_rect()): the box's Rect k, the
+/// pair's scale and band, the box's axes w and v = perp(w) with 1 / |w| and |w|, the centre's
+/// coordinates s, t along them and its excesses over the half extents (in units of |w|).
+struct CentreInRect {
+  Vec2c c;
+  Calc r;
+  Rect k;
+  Calc scale, band;
+  Vec2c w, v;
+  Calc inv, len, s, t, ex, ey;
+};
+/// The frame's values for a box that is proper (is_proper) and a pair of scale >= kTinyCore.
+template <bool aligned>
+[[gnu::always_inline]] inline CentreInRect centre_in_rect(const Vec2c& c, Calc r, const Rect& k, Calc scale) noexcept {
+  CentreInRect f{c, r, k, scale, band_of(scale), {}, {}, 0, 0, 0, 0, 0, 0};
+  // An AABB's axis is (1, 0) exactly: its divisions and square root fold away.
+  f.w = aligned ? Vec2c(1, 0) : k.w;
+  f.v = perp(f.w);
+  const Vec2c d = c - k.c;
+  // 1 / |w| without a square root or division for a stored unit axis (inverse_norm_near_unit).
+  const Calc ww = aligned ? Calc(1) : f.w.squaredNorm();
+  f.inv = aligned ? Calc(1) : inverse_norm_near_unit(ww);
+  f.len = ww * f.inv;
+  const Calc inv2 = f.inv * f.inv;
+  f.s = d.dot(f.w) * inv2;
+  f.t = d.dot(f.v) * inv2;
+  f.ex = std::fabs(f.s) - k.hx;
+  f.ey = std::fabs(f.t) - k.hy;
+  return f;
+}
+/// The gap of a circle whose centre lies beside one side of the box (one excess positive): the
+/// centre is that excess away from the box.
+[[gnu::always_inline]] inline Calc side_gap(const CentreInRect& f) noexcept {
+  return std::max(f.ex, f.ey) * f.len - f.r;
+}
+/// The offset from the centre to the box's nearest corner, for a centre beyond it (both excesses
+/// positive): its coordinates clamped to the box.
+[[gnu::always_inline]] inline Vec2c offset_to_corner(const CentreInRect& f) noexcept {
+  const Calc cs = std::clamp(f.s, -f.k.hx, f.k.hx), ct = std::clamp(f.t, -f.k.hy, f.k.hy);
+  const Vec2c q = f.k.c + f.w * cs + f.v * ct;
+  return q - f.c;
+}
+/// The contact of a centre beyond a corner of the box (both excesses positive): dq from the
+/// centre to the corner, at distance dist > band; out.overlapping says whether the shapes overlap.
+[[gnu::always_inline]] inline void circle_rect_corner(CoreContact& out, const CentreInRect& f, const Vec2c& dq,
+                                                      Calc dist, bool plain) noexcept {
+  // Beyond a corner: the direction to it. Beyond one side, that side's normal (circle_rect_face):
+  // the closest point's rounding at the box's scale would tilt the normal by about rounding /
+  // dist, and a deep push along it would fall short of clearing the flat side.
+  const Calc gap = dist - f.r;
+  const unsigned corner = f.s < 0 ? (f.t < 0 ? 0u : 3u) : (f.t < 0 ? 1u : 2u);
+  store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{corner, false}), FeatureId{});
+  out.normal = quotient_or_unit(dq, dist, plain);
+  const Calc separation = out.overlapping ? gap : std::max(gap, Calc(0));
+  store_separations(out.separations, separation, 0);
+  out.depth = std::max(Calc(0), -separation);
+  out.points[0] = f.c + out.normal * (f.r + separation * 0.5);
+}
+/// The contact by the face the centre is least deep behind or lies beyond (its excess the
+/// largest); out.overlapping says whether the shapes overlap.
+[[gnu::always_inline]] inline void circle_rect_face(CoreContact& out, const CentreInRect& f) noexcept {
+  // Inside, within a tie (kFaceOrderTie) of a ridge of the box's interior, equally deep behind two
+  // faces, rounding cannot tell the faces apart: the w faces, then the negative side, win there,
+  // so that a centre moving along the ridge keeps its face and id.
+  const Calc tie = tie_of(f.scale);
+  const bool along_w = std::max(f.ex, f.ey) > 0 ? f.ex >= f.ey : f.ex >= f.ey - tie;
+  const bool positive = along_w ? f.s > tie : f.t > tie;
+  const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
+  const Vec2c n_face = (along_w ? f.w : f.v) * (positive ? f.inv : -f.inv);
+  const Calc e = ((along_w ? f.s : f.t) * (positive ? 1 : -1) - (along_w ? f.k.hx : f.k.hy)) * f.len;  // <= 0 inside
+  out.normal = -n_face;
+  const Calc separation = out.overlapping ? e - f.r : std::max(e - f.r, Calc(0));
+  store_separations(out.separations, separation, 0);
+  out.depth = std::max(Calc(0), -separation);
+  out.points[0] = f.c + n_face * ((-e - f.r) * 0.5);
+  store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
+}
+
 /// Circle against a box (b the shape, for the exact decision) in the box's frame: the centre's
 /// coordinates along w and perp(w), clamped to the box, give the closest point and its feature
 /// (feature.hpp numbering); a centre inside takes the face it is least deep behind. A box that
-/// is not proper (see is_proper) takes the generic path. Correct for every pair; the caller rules
+/// is not proper (see is_proper) takes the generic path. Every case; contact_circle_rect() takes
+/// the common ones first.
+template <Scalar T, class B>
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_rect_in_general(const Circle<T>& a, const B& b,
+                                                                            Calc speculative) {
+  const Vec2c c = widen(a.center());
+  const Calc r = a.radius();
+  const Rect k = rect_of(b);
+  const Calc scale = rect_scale(c, r, k);
+  if (!(scale >= kTinyCore) || !is_proper(b, k)) return contact_generic(a, b, speculative);
+  const CentreInRect f = centre_in_rect<std::is_same_v<B, Aabb<T>>>(c, r, k, scale);
+  const Calc band = f.band;
+  CoreContact out;
+  out.count = 1;
+  if (f.ex > 0 && f.ey > 0) {
+    const Vec2c dq = offset_to_corner(f);
+    const Calc dist = norm_of(dq), gap = dist - r;
+    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
+    if (dist > band) {
+      const Calc m = dq.cwiseAbs().maxCoeff();
+      circle_rect_corner(out, f, dq, dist, m >= kPlainNormLow && m <= kPlainNormHigh);
+      return out;
+    }
+  } else if (f.ex > 0 || f.ey > 0) {
+    // Beside one side: the centre is its excess away from the box.
+    const Calc gap = side_gap(f);
+    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
+  } else if (!(std::max(f.ex, f.ey) * f.len < -band) && !decide_exactly(a, b)) {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  }
+  circle_rect_face(out, f);
+  return out;
+}
+
+/// contact_circle_rect_in_general(), bit for bit, with the common cases in straight lines: a
+/// proper box, and a circle overlapping it by more than the band (beyond a corner at a distance
+/// free of underflow and overflow, beside a side, or with its centre inside). The caller rules
 /// out most pairs apart first (circle_beyond_rect(), circle_beyond_box_in_float()). Kept out of
-/// line, so that those tests inline into the caller; the box's Rect is taken here again, not
-/// passed: read back right after the caller's stores, a passed one waits on them.
+/// line, so that those tests inline into the caller, and apart from the general steps, whose
+/// calls would give it a stack frame; the box's Rect is taken here again, not passed: read back
+/// right after the caller's stores, a passed one waits on them.
 template <Scalar T, class B>
 [[gnu::noinline]] std::optional<CoreContact> contact_circle_rect(const Circle<T>& a, const B& b, Calc speculative) {
   const Vec2c c = widen(a.center());
@@ -599,64 +752,26 @@ template <Scalar T, class B>
   const Calc scale = rect_scale(c, r, k);
   // Whether the box is proper is asked here, out of line, so that the test for apart pairs before
   // the call does not compute it.
-  if (!(scale >= kTinyCore) || !is_proper(b, k)) return contact_generic(a, b, speculative);
-  const Calc band = band_of(scale);
-  // An AABB's axis is (1, 0) exactly: its divisions and square root fold away.
-  constexpr bool aligned = std::is_same_v<B, Aabb<T>>;
-  const Vec2c w = aligned ? Vec2c(1, 0) : k.w, v = perp(w), d = c - k.c;
-  // 1 / |w| without a square root or division for a stored unit axis (inverse_norm_near_unit).
-  const Calc ww = aligned ? Calc(1) : w.squaredNorm(), inv = aligned ? Calc(1) : inverse_norm_near_unit(ww);
-  const Calc len = ww * inv, inv2 = inv * inv;
-  const Calc sw = d.dot(w), tw = d.dot(v);
-  const Calc s = sw * inv2, t = tw * inv2;
-  const Calc ex = std::fabs(s) - k.hx, ey = std::fabs(t) - k.hy;  // excesses, in units of |w|
-  CoreContact out;
-  out.count = 1;
-  if (ex > 0 && ey > 0) {
-    const Calc cs = std::clamp(s, -k.hx, k.hx), ct = std::clamp(t, -k.hy, k.hy);
-    const Vec2c q = k.c + w * cs + v * ct;
-    const Vec2c dq = q - c;
-    const Calc dist = norm_of(dq), gap = dist - r;
-    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
-    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
-    if (dist > band) {
-      // Beyond a corner: the direction to it. Beyond one side, that side's normal (below): the
-      // closest point's rounding at the box's scale would tilt the normal by about rounding /
-      // dist, and a deep push along it would fall short of clearing the flat side.
-      const unsigned corner = s < 0 ? (t < 0 ? 0u : 3u) : (t < 0 ? 1u : 2u);
-      store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{corner, false}), FeatureId{});
-      out.normal = direction_of(dq, dist);
-      const Calc separation = out.overlapping ? gap : std::max(gap, Calc(0));
-      store_separations(out.separations, separation, 0);
-      out.depth = std::max(Calc(0), -separation);
-      out.points[0] = c + out.normal * (r + separation * 0.5);
+  if (scale >= kTinyCore && is_proper(b, k)) {
+    const CentreInRect f = centre_in_rect<std::is_same_v<B, Aabb<T>>>(c, r, k, scale);
+    CoreContact out;
+    out.count = 1;
+    if (f.ex > 0 && f.ey > 0) {
+      const Vec2c dq = offset_to_corner(f);
+      const Calc m = dq.cwiseAbs().maxCoeff();
+      if (m >= kPlainNormLow && m <= kPlainNormHigh) {
+        const Calc dist = square_root(dq.squaredNorm());
+        if (dist - r < -f.band && dist > f.band) {
+          circle_rect_corner(out, f, dq, dist, true);
+          return out;
+        }
+      }
+    } else if (const Calc e = std::max(f.ex, f.ey) * f.len; e > 0 ? side_gap(f) < -f.band : e < -f.band) {
+      circle_rect_face(out, f);
       return out;
     }
-  } else if (ex > 0 || ey > 0) {
-    // Beside one side: the centre is its excess away from the box.
-    const Calc gap = std::max(ex, ey) * len - r;
-    out.overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
-    if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
-  } else if (!(std::max(ex, ey) * len < -band) && !decide_exactly(a, b)) {
-    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   }
-  // The face the centre is least deep behind or lies beyond (its excess the largest).
-  // Inside, within a tie (kFaceOrderTie) of a ridge of the box's interior, equally deep behind two
-  // faces, rounding cannot tell the faces apart: the w faces, then the negative side, win there,
-  // so that a centre moving along the ridge keeps its face and id.
-  const Calc tie = tie_of(scale);
-  const bool along_w = std::max(ex, ey) > 0 ? ex >= ey : ex >= ey - tie;
-  const bool positive = along_w ? s > tie : t > tie;
-  const unsigned face = along_w ? (positive ? 1u : 3u) : (positive ? 2u : 0u);
-  const Vec2c n_face = (along_w ? w : v) * (positive ? inv : -inv);
-  const Calc e = ((along_w ? s : t) * (positive ? 1 : -1) - (along_w ? k.hx : k.hy)) * len;  // <= 0 inside
-  out.normal = -n_face;
-  const Calc separation = out.overlapping ? e - r : std::max(e - r, Calc(0));
-  store_separations(out.separations, separation, 0);
-  out.depth = std::max(Calc(0), -separation);
-  out.points[0] = c + n_face * ((-e - r) * 0.5);
-  store_ids(out.ids, id_of(CoreFeature{0, false}, CoreFeature{face, true}), FeatureId{});
-  return out;
+  return contact_circle_rect_in_general(a, b, speculative);
 }
 
 template <class S>
