@@ -250,6 +250,16 @@ std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculat
   return overlapping ? dist - ra - rb : std::max(Calc(0), dist - ra - rb);
 }
 
+/// The normal, depth and point of circles whose centres are dist > band apart (offset d from a's
+/// centre ca, plain as quotient_or_unit() takes it): the normal along the centres, the point
+/// midway between the surfaces.
+[[gnu::always_inline]] inline void circles_along_centres(CoreContact& out, const Vec2c& ca, const Vec2c& d, Calc dist,
+                                                         bool plain, Calc ra, Calc separation) noexcept {
+  out.normal = quotient_or_unit(d, dist, plain);
+  out.depth = std::max(Calc(0), -separation);
+  out.points[0] = ca + out.normal * (ra + separation * 0.5);
+}
+
 /// Circle against circle: the centres' offset gives normal, depth and the one point; coincident
 /// centres (within rounding) give normal (1, 0), as contact_cores() does. Every case;
 /// contact_circles() takes the common one first.
@@ -274,9 +284,7 @@ template <Scalar T>
   if (!out.overlapping && !(separation <= speculative)) return std::nullopt;
   store_separations(out.separations, separation, 0);
   if (dist > band_of(s)) {
-    out.normal = quotient_or_unit(d, dist, plain);
-    out.depth = std::max(Calc(0), -separation);
-    out.points[0] = ca + out.normal * (ra + separation * 0.5);
+    circles_along_centres(out, ca, d, dist, plain, ra, separation);
   } else {
     if (sign <= 0) {
       out.depth = ra + rb;
@@ -307,9 +315,7 @@ template <Scalar T>
         out.count = 1;
         const Calc separation = circles_separation(true, dist, ra, rb);
         store_separations(out.separations, separation, 0);
-        out.normal = quotient_or_unit(d, dist, true);
-        out.depth = std::max(Calc(0), -separation);
-        out.points[0] = ca + out.normal * (ra + separation * 0.5);
+        circles_along_centres(out, ca, d, dist, true, ra, separation);
         return out;
       }
     }
