@@ -156,18 +156,27 @@ struct Contact {
 
 namespace detail {
 
-/// Writes c rounded to T into out, field by field (the caller's result object: a copy of a
-/// contact written piecewise would be read back in wider pieces than it was stored).
+/// A CoreContact rounded to T, as the value that initialises a Contact<T>: emplace() builds the
+/// contact from it in place, field by field, without zeroing it first (every field is written) or
+/// copying it (a copy of a contact written piecewise would be read back in wider pieces than it
+/// was stored).
 template <Scalar T>
-void round_into(const CoreContact& c, Contact<T>& out) {
-  out.normal = c.normal.template cast<T>();
-  out.depth = static_cast<T>(c.depth);
-  out.count = c.count;
-  for (std::size_t i = 0; i < 2; ++i) {
-    out.points[i] = c.points[i].template cast<T>();
-    out.ids[i] = c.ids[i];
-    out.separations[i] = static_cast<T>(c.separations[i]);
+struct RoundedContact {
+  const CoreContact& c;
+  operator Contact<T>() const {
+    return {c.normal.template cast<T>(),
+            static_cast<T>(c.depth),
+            c.count,
+            {c.points[0].template cast<T>(), c.points[1].template cast<T>()},
+            c.ids,
+            {static_cast<T>(c.separations[0]), static_cast<T>(c.separations[1])}};
   }
+};
+
+/// Makes out hold c rounded to T (RoundedContact).
+template <Scalar T>
+void round_into(const CoreContact& c, std::optional<Contact<T>>& out) {
+  out.emplace(RoundedContact<T>{c});
 }
 
 /// The contact of two primitives in either order (contact_pair() takes registry order; the other
@@ -252,7 +261,7 @@ std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0
   const std::optional<CoreContact> c =
       visit_shapes(a, b, [&](const auto& ca, const auto& cb) { return contact_concrete(ca, cb, spec); });
   std::optional<Contact<T>> out;
-  if (c) round_into(*c, out.emplace());
+  if (c) round_into(*c, out);
   return out;
 }
 

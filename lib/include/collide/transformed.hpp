@@ -181,7 +181,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
     std::optional<Contact<T>> out;
     const detail::LocalContact local = detail::contact_local(ca, xa.pose(), cb, xb.pose(), speculative);
     if (local.decided) {
-      if (local.contact) detail::round_into(*local.contact, out.emplace());
+      if (local.contact) detail::round_into(*local.contact, out);
       return out;
     }
     return detail::with_placed_both(
