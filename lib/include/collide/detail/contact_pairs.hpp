@@ -728,7 +728,7 @@ template <Scalar T, class B>
     if (!out.overlapping && !(speculative > 0 && gap <= speculative)) return std::nullopt;
     if (dist > band) {
       const Calc m = dq.cwiseAbs().maxCoeff();
-      circle_rect_corner(out, f, dq, dist, m >= kPlainNormLow && m <= kPlainNormHigh);
+      circle_rect_corner(out, f, dq, dist, is_plain_magnitude(m));
       return out;
     }
   } else if (f.ex > 0 || f.ey > 0) {
@@ -765,7 +765,7 @@ template <Scalar T, class B>
     if (f.ex > 0 && f.ey > 0) {
       const Vec2c dq = offset_to_corner(f);
       const Calc m = dq.cwiseAbs().maxCoeff();
-      if (m >= kPlainNormLow && m <= kPlainNormHigh) {
+      if (is_plain_magnitude(m)) {
         const Calc dist = square_root(dq.squaredNorm());
         if (dist - r < -f.band && dist > f.band) {
           circle_rect_corner(out, f, dq, dist, true);

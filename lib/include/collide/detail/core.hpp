@@ -357,12 +357,18 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
   return s / s.norm();
 }
 
+/// Whether a vector whose largest absolute component is m has a plain norm: |v|^2 neither
+/// underflows nor overflows (config.hpp, kPlainNormLow).
+[[gnu::always_inline]] inline bool is_plain_magnitude(Calc m) noexcept {
+  return m >= kPlainNormLow && m <= kPlainNormHigh;
+}
+
 /// |v| without underflow or overflow of |v|^2: a vector with a component outside [2^-500, 2^500]
 /// is first scaled by a power of two (exact when scaling up), so a direction between points
 /// 1e-159 apart keeps its 53 bits instead of the few left in a subnormal square.
 [[gnu::always_inline]] inline Calc norm_of(const Vec2c& v) noexcept {
   const Calc m = std::max(std::fabs(v.x()), std::fabs(v.y()));
-  if (!(m > 0) || (m >= kPlainNormLow && m <= kPlainNormHigh)) [[likely]]
+  if (!(m > 0) || is_plain_magnitude(m)) [[likely]]
     return v.norm();
   return norm_of_scaled(v, m);
 }
@@ -377,7 +383,7 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
   __m128d r;
   if (!(m > 0)) {
     r = _mm_setzero_pd();
-  } else if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]] {
+  } else if (is_plain_magnitude(m)) [[likely]] {
     r = _mm_div_pd(_mm_loadu_pd(v.data()), _mm_set1_pd(v.norm()));
   } else {
     r = _mm_loadu_pd(unit_of_scaled(v, m).data());
@@ -385,7 +391,7 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
   return vec_of(r);
 #else
   if (!(m > 0)) return Vec2c::Zero();
-  if (m >= kPlainNormLow && m <= kPlainNormHigh) [[likely]]
+  if (is_plain_magnitude(m)) [[likely]]
     return v / v.norm();
   return unit_of_scaled(v, m);
 #endif
@@ -405,7 +411,7 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
 /// a call spills the caller's registers around the division it waits on).
 [[gnu::always_inline]] inline Vec2c direction_of(const Vec2c& d, Calc dist) noexcept {
   const Calc m = std::max(std::fabs(d.x()), std::fabs(d.y()));
-  return quotient_or_unit(d, dist, m >= kPlainNormLow && m <= kPlainNormHigh);
+  return quotient_or_unit(d, dist, is_plain_magnitude(m));
 }
 
 /// max over the core of x . n
