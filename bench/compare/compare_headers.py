@@ -16,8 +16,12 @@ game loop's narrowphase spends more than Box2D's. With --world as well, each Box
 points is also turned into world points, normal and separations (b2WorldManifold::Initialize), the
 values contact() returns, so both sides compute the same kind of answer.
 
-Usage: bench/compare/compare_headers.py OLD [--new NEW] [--runs N] [--reps R] [--bodies B]
-       bench/compare/compare_headers.py --box2d [--world] [--new NEW] [--runs N] [--reps R] [--bodies B]
+With --pairs apart (or contact), only the pairs that contact() finds apart (or in contact) are
+replayed: a pair apart costs Box2D one pass over a shape's faces, and collide's answer for it
+may cost more or less than for a pair in contact, so the two say where a gap comes from.
+
+Usage: bench/compare/compare_headers.py OLD [--new NEW] [--pairs P] [--runs N] [--reps R] [--bodies B]
+       bench/compare/compare_headers.py --box2d [--world] [--new NEW] [--pairs P] [--runs N] [--reps R] [--bodies B]
   OLD, NEW: git revisions whose lib/include is compared (NEW: the working tree's lib/include).
 Needs g++ (or $CXX), Eigen, Box2D 2.4.1 and Google Benchmark, as collide_bench does.
 """
@@ -53,6 +57,8 @@ def main():
     ap.add_argument("--world", action="store_true",
                     help="with --box2d: Box2D's manifolds also turned into world values")
     ap.add_argument("--new", help="revision of the new headers (default: the working tree)")
+    ap.add_argument("--pairs", choices=["all", "apart", "contact"], default="all",
+                    help="replay all pairs, or only those contact() finds apart, or in contact")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--reps", type=int, default=200)
     ap.add_argument("--bodies", type=int, default=2000)
@@ -82,11 +88,12 @@ def main():
             against = "Box2D 2.4.1" + (" with world manifolds" if args.world else "")
         else:
             against = "old: " + args.old
-        print("%s, new: %s; %d bodies, best of %d passes" % (against, new_name, args.bodies, args.reps))
+        print("%s, new: %s; %d bodies, %s pairs, best of %d passes" %
+              (against, new_name, args.bodies, args.pairs, args.reps))
         failed = False
         for run in range(args.runs):
             print("\nrun %d" % (run + 1), flush=True)
-            failed |= subprocess.run([exe, str(args.bodies), str(args.reps)]).returncode != 0
+            failed |= subprocess.run([exe, str(args.bodies), str(args.reps), args.pairs]).returncode != 0
         if failed:
             sys.exit("compare_headers: the two sides replayed different pairs")
 

@@ -14,6 +14,7 @@
 extern "C" std::size_t group_count_new(std::size_t bodies);
 extern "C" const char* group_name_new(std::size_t bodies, std::size_t g, std::size_t* pairs);
 extern "C" double time_group_new(std::size_t bodies, std::size_t g, long* points);
+extern "C" void select_new(int which);
 #ifdef COMPARE_BOX2D
 extern "C" double time_box2d_new(std::size_t bodies, std::size_t g, long* points);
 extern "C" double time_box2d_world_new(std::size_t bodies, std::size_t g, long* points);
@@ -31,6 +32,7 @@ constexpr bool kSameAnswers = false;  // Box2D's capsules (2-gons with a radius)
 extern "C" std::size_t group_count_old(std::size_t bodies);
 extern "C" const char* group_name_old(std::size_t bodies, std::size_t g, std::size_t* pairs);
 extern "C" double time_group_old(std::size_t bodies, std::size_t g, long* points);
+extern "C" void select_old(int which);
 #define OLD(name) name##_old
 #define TIME_OLD time_group_old
 #define OLD_LABEL "old"
@@ -39,12 +41,18 @@ constexpr bool kSameAnswers = true;
 #endif
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: %s BODIES REPS\n", argv[0]);
+  // PAIRS: all of them, or only those contact() finds apart, or only those it finds in contact.
+  const char* const selections[] = {"all", "apart", "contact"};
+  int which = 0;
+  while (argc == 4 && which < 3 && std::strcmp(argv[3], selections[which]) != 0) ++which;
+  if ((argc != 3 && argc != 4) || which == 3) {
+    std::fprintf(stderr, "usage: %s BODIES REPS [all|apart|contact]\n", argv[0]);
     return 2;
   }
   const std::size_t bodies = std::strtoul(argv[1], nullptr, 10);
   const long reps = std::strtol(argv[2], nullptr, 10);
+  select_new(which);
+  OLD(select)(which);
   const std::size_t groups = group_count_new(bodies);
   if (groups != OLD(group_count)(bodies) || reps < 1) {
     std::fprintf(stderr, "the two sides replay different pairs\n");
@@ -56,6 +64,7 @@ int main(int argc, char** argv) {
     std::size_t pairs_old = 0, pairs_new = 0;
     const char* name = group_name_new(bodies, g, &pairs_new);
     if (std::strcmp(name, OLD(group_name)(bodies, g, &pairs_old)) != 0 || pairs_old != pairs_new) same = false;
+    if (pairs_new == 0 || pairs_old == 0) continue;  // a selection left none of this kind pair
     double best_old = 1e300, best_new = 1e300;
     long points_old = 0, points_new = 0;
     for (long r = 0; r < reps; ++r) {

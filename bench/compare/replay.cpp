@@ -35,8 +35,12 @@ struct Replay {
   std::vector<std::pair<std::string, std::vector<Placed>>> groups;  // registry order of kind pairs
 };
 
+/// Which of a kind pair's pairs are replayed: all, those contact() finds apart, or those it finds
+/// in contact (select()).
+enum class Selection { All = 0, Apart = 1, InContact = 2 };
+
 /// The replay of a scene of `bodies` bodies, built at the first call (every call asks for the same).
-const Replay& replay(std::size_t bodies) {
+const Replay& replay_all(std::size_t bodies) {
   static const Replay r = [bodies] {
     using namespace bench;
     Replay out;
@@ -71,7 +75,38 @@ const Replay& replay(std::size_t bodies) {
   return r;
 }
 
+Selection selection = Selection::All;
+
+/// The selected pairs of each kind pair of replay_all(bodies), in the same order; a kind pair
+/// left without pairs keeps its place, empty.
+const Replay& replay(std::size_t bodies) {
+  static Replay selected;
+  static Selection made = Selection::All;
+  const Replay& all = replay_all(bodies);
+  if (selection == Selection::All) return all;
+  if (selected.scene && made == selection) return selected;
+  selected = Replay{all.scene, {}};
+  for (const auto& [name, pairs] : all.groups) {
+    std::vector<Placed> kept;
+    for (const Placed& q : pairs) {
+      const bool found =
+          std::visit([&](const auto& a, const auto& b) { return collide::contact(a, q.xa, b, q.xb).has_value(); },
+                     all.scene->shapes[q.a], all.scene->shapes[q.b]);
+      if (found == (selection == Selection::InContact)) kept.push_back(q);
+    }
+    selected.groups.emplace_back(name, std::move(kept));
+  }
+  made = selection;
+  return selected;
+}
+
 }  // namespace
+
+/// Replays from now on only the pairs of `which` (0: all, 1: those apart, 2: those in contact,
+/// as this side's contact() finds them).
+extern "C" void COMPARE_ENTRY(select)(int which) {
+  selection = Selection(which);
+}
 
 /// The number of kind pairs among the candidate pairs.
 extern "C" std::size_t COMPARE_ENTRY(group_count)(std::size_t bodies) {
@@ -89,6 +124,10 @@ extern "C" double COMPARE_ENTRY(time_group)(std::size_t bodies, std::size_t g, l
   const auto& shapes = r.scene->shapes;
   const std::vector<Placed>& pairs = r.groups[g].second;
   long found = 0;
+  if (pairs.empty()) {
+    *points = 0;
+    return 0;
+  }
   const auto start = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& a0, const auto& b0) {
@@ -117,6 +156,11 @@ double time_box2d_pass(std::size_t bodies, std::size_t g, long* points) {
   const Replay& r = replay(bodies);
   const std::vector<Placed>& pairs = r.groups[g].second;
   static std::vector<std::vector<std::pair<b2Transform, b2Transform>>> poses;  // per group, built once
+  static Selection posed = Selection::All;                                     // the pairs they are of
+  if (posed != selection) {
+    poses.clear();
+    posed = selection;
+  }
   if (poses.size() < r.groups.size()) poses.resize(r.groups.size());
   if (poses[g].empty()) {
     const auto to_b2_pose = [](const collide::Transform<float>& x) {
