@@ -47,23 +47,45 @@ def run(exe, repetitions, min_time, flt, raw_path):
         return json.load(f), checks
 
 
-def medians(raw, repetitions):
-    """name -> ns per unit (per pair or per box), from the median aggregate (or the single run)."""
-    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
-    out = {}
+def chosen_runs(raw, repetitions):
+    """(name, result) of each benchmark: its median aggregate, or its single run."""
     for b in raw["benchmarks"]:
         if repetitions > 1 and b.get("aggregate_name") != "median":
             continue
         if repetitions <= 1 and b.get("run_type") == "aggregate":
             continue
-        name = b.get("run_name", b["name"])
+        yield b.get("run_name", b["name"]), b
+
+
+def medians(raw, repetitions):
+    """name -> ns per unit (per pair or per box), from the median aggregate (or the single run)."""
+    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+    out = {}
+    for name, b in chosen_runs(raw, repetitions):
         per = b.get("pairs") or b.get("boxes") or 1.0
         out[name] = b["cpu_time"] * scale[b.get("time_unit", "ns")] / per
     return out
 
 
+def counters(raw, repetitions):
+    """The game loop's per-frame counters (*_ms) of each run, "game_loop/IMPL/N" -> {counter: ms},
+    from the median aggregate (or the single run)."""
+    return {"/".join(name.split("/")[:3]): {k: v for k, v in b.items() if k.endswith("_ms")}
+            for name, b in chosen_runs(raw, repetitions) if name.startswith("game_loop/")}
+
+
 def ratio(a, b):
     return round(a / b, 3) if a is not None and b else None
+
+
+# The pairs whose contact() has a speed goal against Box2D 2.4.1's manifold function:
+# circle-circle, circle-box, circle-polygon, box-box and polygon-polygon.
+CONTACT_GOAL_PAIRS = ("circle_circle", "circle_aabb", "circle_obb", "circle_polygon", "aabb_aabb", "obb_obb",
+                      "polygon_polygon")
+# The game loop's phases as its counters name them, and the goals on collide / Box2D per frame.
+LOOP_PHASES = ("transforms", "broadphase", "narrowphase", "frame")
+LOOP_GOALS = (("narrowphase", "narrowphase <= Box2D's", 1.0), ("transforms", "shape update <= Box2D's", 1.0),
+              ("frame", "whole frame <= 0.5x Box2D's", 0.5))
 
 
 def main():
@@ -85,6 +107,7 @@ def main():
     os.makedirs(reports, exist_ok=True)
     raw, checks = run(exe, args.repetitions, args.min_time, args.filter, os.path.join(reports, "bench_raw.json"))
     m = medians(raw, args.repetitions)
+    loop_counters = counters(raw, args.repetitions)
 
     pairs, broad = [], []
     for name in sorted(m):
@@ -126,6 +149,21 @@ def main():
             row[impl + "_over_box2d"] = ratio(row[impl + "_ns_per_box"], b2)
         events.append(row)
 
+    # The game loop: collide's loop on each broadphase structure against Box2D's, per frame.
+    loops = []
+    for n in sorted({int(k.split("/")[2]) for k in loop_counters}):
+        b2 = loop_counters.get("game_loop/box2d/%d" % n)
+        for impl, structure in (("collide", "tree"), ("collide_sweep", "sweep")):
+            c = loop_counters.get("game_loop/%s/%d" % (impl, n))
+            if b2 is None or c is None:
+                continue
+            row = {"n": n, "structure": structure}
+            for phase in LOOP_PHASES:
+                row[phase + "_ms"] = c.get(phase + "_ms")
+                row["box2d_" + phase + "_ms"] = b2.get(phase + "_ms")
+                row[phase + "_ratio"] = ratio(row[phase + "_ms"], row["box2d_" + phase + "_ms"])
+            loops.append(row)
+
     def fmt(x):
         return "%.2f" % x if isinstance(x, (int, float)) else "-"
 
@@ -152,7 +190,26 @@ def main():
                 "tree_ns_per_box", "sweep_ns_per_box", "grid_ns_per_box", "box2d_broadphase_ns_per_box",
                 "tree_over_box2d", "sweep_over_box2d", "grid_over_box2d")] for r in events], right=set(range(8)))
 
+    if loops:
+        print("\nGame loop (ms per frame, collide / Box2D 2.4.1 in the same run; ratio < 1 is faster)")
+        collide_tools.print_table(
+            ["N", "collide", "transforms", "broadphase", "narrowphase", "frame", "/transf", "/broad", "/narrow",
+             "/frame"],
+            [[r["n"], r["structure"]] + ["%.3f / %.3f" % (r[p + "_ms"], r["box2d_" + p + "_ms"])
+                                         if r[p + "_ms"] is not None and r["box2d_" + p + "_ms"] is not None else "-"
+                                         for p in LOOP_PHASES] + [fmt(r[p + "_ratio"]) for p in LOOP_PHASES]
+             for r in loops], right={0} | set(range(2, 10)))
+
     goals = []
+    for r in pairs:
+        if r["pair"] in CONTACT_GOAL_PAIRS and r["contact_ratio_vs_manifold"] is not None:
+            goals.append({"goal": "%s/%s contact() <= Box2D manifold function" % (r["pair"], r["set"]),
+                          "value": r["contact_ratio_vs_manifold"], "met": r["contact_ratio_vs_manifold"] <= 1.0})
+    for r in loops:
+        for phase, what, limit in LOOP_GOALS:
+            if r[phase + "_ratio"] is not None:
+                goals.append({"goal": "game loop %d (%s): %s" % (r["n"], r["structure"], what),
+                              "value": r[phase + "_ratio"], "met": r[phase + "_ratio"] <= limit})
     for r in pairs:
         for peer in ("ratio_vs_test_overlap", "ratio_vs_manifold"):
             if r[peer] is not None:
@@ -186,7 +243,7 @@ def main():
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
            "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
-           "broadphase_events": events,
+           "broadphase_events": events, "game_loop": loops,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:
