@@ -119,8 +119,12 @@ def main():
                 return m.get("%s/%s/%s/%s" % (kind, pair, placement, impl))
             row = {"pair": pair, "set": placement, "collide_ns": get("collide"),
                    "box2d_test_overlap_ns": get("box2d_test_overlap"), "box2d_manifold_ns": get("box2d_manifold"),
-                   "naive_ns": get("naive"), "collide_contact_ns": get("collide", "contact"),
-                   "box2d_manifold_contact_ns": get("box2d_manifold", "contact")}
+                   "naive_ns": get("naive"), "collide_contact_ns": get("collide", "contact")}
+            # Box2D's manifold function is timed twice on these pairs, for the overlap table and
+            # for the contacts (the same calls, the manifold kept whole); the contacts are measured
+            # against the faster, so that a slow moment of the machine during one cannot meet a goal.
+            b2_manifold = [t for t in (get("box2d_manifold", "contact"), row["box2d_manifold_ns"]) if t is not None]
+            row["box2d_manifold_contact_ns"] = min(b2_manifold) if b2_manifold else None
             row["ratio_vs_test_overlap"] = ratio(row["collide_ns"], row["box2d_test_overlap_ns"])
             row["ratio_vs_manifold"] = ratio(row["collide_ns"], row["box2d_manifold_ns"])
             row["ratio_vs_naive"] = ratio(row["collide_ns"], row["naive_ns"])
@@ -167,7 +171,8 @@ def main():
     def fmt(x):
         return "%.2f" % x if isinstance(x, (int, float)) else "-"
 
-    print("\nPer pair (ns, medians of %d repetitions; ratio = collide / peer, < 1 is faster)" % args.repetitions)
+    print("\nPer pair (ns, medians of %d repetitions; ratio = collide / peer, < 1 is faster; contact against the"
+          " faster of Box2D's two timings of its manifold function)" % args.repetitions)
     collide_tools.print_table(
         ["pair", "set", "collide", "b2Test", "b2Manif", "naive", "/Test", "/Manif", "/naive", "contact", "b2Manif",
          "ratio"],
