@@ -1,6 +1,7 @@
 // One side of bench/compare/compare_headers.py: the pairs of bodies whose bounding boxes overlap
 // in frames 30-39 of the game loop (bench/game_loop.cpp's scene and motion; a tree built each
-// frame), grouped by kind pair, and the time of one pass of contact() over each group. Compiled
+// frame), grouped by kind pair (all of them, or after select() only those that contact() finds
+// apart, or in contact), and the time of one pass of contact() over each group. Compiled
 // twice, against two versions of the library's headers, with the library's namespace renamed
 // (-Dcollide=...) so that both live in one process; COMPARE_SIDE names this side's entry points.
 // time_box2d() times Box2D 2.4.1's b2Collide* on the same pairs and poses, as the game loop calls
