@@ -7,6 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -124,6 +125,25 @@ constexpr bool naive_exists() {
   };
 }
 
+/// The floor of a world-space contact of two circles: the fields contact() returns (normal, depth,
+/// the point midway, its separation and feature id), in float, with one square root and one
+/// division and no exact decision, so an answer within rounding of touching is a guess. Box2D's
+/// b2CollideCircles returns a local manifold and leaves the square root to b2WorldManifold.
+inline std::optional<collide::Contact<float>> naive_contact(const CircleIn& a, const CircleIn& b) {
+  const V ca = a.c.center(), d = b.c.center() - ca;
+  const float ra = a.c.radius(), r = ra + b.c.radius(), d2 = d.squaredNorm();
+  if (d2 > r * r) return std::nullopt;
+  const float dist = std::sqrt(d2), depth = r - dist;
+  const V n = dist > 0 ? V(d / dist) : V(1, 0);
+  return collide::Contact<float>{n, depth, 1, {V(ca + n * (ra - 0.5f * depth)), V(0, 0)}, {}, {-depth, 0}};
+}
+template <class A, class B>
+constexpr bool naive_contact_exists() {
+  return requires(const A& a, const B& b) {
+    naive_contact(a, b);
+  };
+}
+
 template <class A, class B>
 struct Set {
   std::string pair;  // registry name, e.g. "circle_obb"
@@ -167,6 +187,11 @@ bool cross_check(Set<A, B>& s) {
     };
     compare(b2_overlap(a, b));
     if constexpr (naive_exists<A, B>()) compare(naive(a, b));
+    if constexpr (naive_contact_exists<A, B>()) {
+      const auto n = naive_contact(a, b);
+      compare(n.has_value());
+      if (n && ct && std::fabs(double(n->depth) - depth) > depth_tol) ++depth_bad;
+    }
     if constexpr (manifold_exists<A, B>()) {
       const auto m = b2_manifold(a, b);
       compare(m->hit);
@@ -231,6 +256,15 @@ void register_set(const std::shared_ptr<Set<A, B>>& s) {
   if constexpr (naive_exists<A, B>()) {
     benchmark::RegisterBenchmark(("overlap/" + tail + "/naive").c_str(), [s](benchmark::State& st) {
       run_pairs(st, *s, [](const A& a, const B& b) { return int(naive(a, b)); });
+    });
+  }
+  if constexpr (naive_contact_exists<A, B>()) {
+    benchmark::RegisterBenchmark(("contact/" + tail + "/naive").c_str(), [s](benchmark::State& st) {
+      run_pairs(st, *s, [](const A& a, const B& b) {
+        const auto c = naive_contact(a, b);
+        benchmark::DoNotOptimize(c);
+        return c ? c->count : 0;
+      });
     });
   }
 }

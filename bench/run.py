@@ -125,6 +125,9 @@ def main():
             row["ratio_vs_manifold"] = ratio(row["collide_ns"], row["box2d_manifold_ns"])
             row["ratio_vs_naive"] = ratio(row["collide_ns"], row["naive_ns"])
             row["contact_ratio_vs_manifold"] = ratio(row["collide_contact_ns"], row["box2d_manifold_contact_ns"])
+            # The floor of a world-space contact (the same fields, no exact decision), where one is written.
+            row["naive_contact_ns"] = get("naive", "contact")
+            row["naive_contact_ratio_vs_manifold"] = ratio(row["naive_contact_ns"], row["box2d_manifold_contact_ns"])
             pairs.append(row)
     sizes = sorted({int(n.split("/")[3]) for n in m if n.startswith("broadphase/")})
     for n in sizes:
@@ -162,6 +165,10 @@ def main():
                 row[phase + "_ms"] = c.get(phase + "_ms")
                 row["box2d_" + phase + "_ms"] = b2.get(phase + "_ms")
                 row[phase + "_ratio"] = ratio(row[phase + "_ms"], row["box2d_" + phase + "_ms"])
+            # Box2D's manifolds turned into world points, normal and separations (what contact()
+            # returns), timed outside its frame: the same outputs, not the goal's measure.
+            row["box2d_narrowphase_world_ms"] = b2.get("narrowphase_world_ms")
+            row["narrowphase_world_ratio"] = ratio(row["narrowphase_ms"], row["box2d_narrowphase_world_ms"])
             loops.append(row)
 
     def fmt(x):
@@ -176,6 +183,16 @@ def main():
             "collide_ns", "box2d_test_overlap_ns", "box2d_manifold_ns", "naive_ns", "ratio_vs_test_overlap",
             "ratio_vs_manifold", "ratio_vs_naive", "collide_contact_ns", "box2d_manifold_contact_ns",
             "contact_ratio_vs_manifold")] for r in pairs], right=set(range(2, 12)))
+    floors = [r for r in pairs if r["naive_contact_ns"] is not None]
+    if floors:
+        print("\nContact floor: a naive world-space contact with contact()'s fields and no exact decision, against"
+              " the same Box2D timing (ns; ratio = / Box2D manifold function)")
+        collide_tools.print_table(
+            ["pair", "set", "naive", "contact", "b2Manif", "naive/", "contact/"],
+            [[r["pair"], r["set"]] + [fmt(r[k]) for k in (
+                "naive_contact_ns", "collide_contact_ns", "box2d_manifold_contact_ns",
+                "naive_contact_ratio_vs_manifold", "contact_ratio_vs_manifold")] for r in floors],
+            right=set(range(2, 7)))
     print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster; batch = tree add_batch)")
     collide_tools.print_table(
         ["N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid", "batch", "xBatch"],
@@ -192,14 +209,15 @@ def main():
                 "tree_over_box2d", "sweep_over_box2d", "grid_over_box2d")] for r in events], right=set(range(8)))
 
     if loops:
-        print("\nGame loop (ms per frame, collide / Box2D 2.4.1 in the same run; ratio < 1 is faster)")
+        print("\nGame loop (ms per frame, collide / Box2D 2.4.1 in the same run; ratio < 1 is faster; /world:"
+              " narrowphase / Box2D's b2Collide* plus b2WorldManifold, the same outputs, timed outside its frame)")
         collide_tools.print_table(
             ["N", "collide", "transforms", "broadphase", "narrowphase", "frame", "/transf", "/broad", "/narrow",
-             "/frame"],
+             "/frame", "/world"],
             [[r["n"], r["structure"]] + ["%.3f / %.3f" % (r[p + "_ms"], r["box2d_" + p + "_ms"])
                                          if r[p + "_ms"] is not None and r["box2d_" + p + "_ms"] is not None else "-"
                                          for p in LOOP_PHASES] + [fmt(r[p + "_ratio"]) for p in LOOP_PHASES]
-             for r in loops], right={0} | set(range(2, 10)))
+             + [fmt(r["narrowphase_world_ratio"])] for r in loops], right={0} | set(range(2, 11)))
 
     goals = []
     for r in pairs:
