@@ -139,10 +139,11 @@ CoreInput segment_spec(const Vec2d& p, const Vec2d& q) {
   return out;
 }
 
-/// The primitives of a shape: itself, or a compound's children.
+/// The primitives of a shape: itself, or a compound's children. A compound of one child is that
+/// child placed by its child transform: the questions defined for primitives only answer for it.
 struct Parts {
   boost::container::small_vector<CoreInput, 1> items;
-  bool compound = false;
+  bool compound = false;  ///< more than one child
 };
 
 /// The primitives of a placed shape, each with its chain of placements (child, then body).
@@ -154,7 +155,7 @@ Parts parts_of(const Placed& s) {
       [&](const auto& x) {
         using S = std::decay_t<decltype(x)>;
         if constexpr (std::is_same_v<S, Compound<double>>) {
-          out.compound = true;
+          out.compound = x.children().size() > 1;
           for (std::size_t i = 0; i < x.children().size(); ++i) {
             CoreInput c = core_input_of(x.children()[i]);
             const Transform<double> t = x.child_transform(i);

@@ -66,10 +66,26 @@ TEST(OracleDepth, CapsulesAndPolygons) {
   expect_depth(Capsule<double>(V(0, 0), V(1, 0), 0.5), Capsule<double>(V(0, 3), V(1, 3), 0.5), 0.0);
 }
 
-TEST(OracleDepth, CompoundsAreUnsupported) {
-  const Compound<double> c({Circle<double>(V(0, 0), 1.0)});
+TEST(OracleDepth, CompoundsOfSeveralChildrenAreUnsupported) {
+  const Compound<double> c({Circle<double>(V(0, 0), 1.0), Circle<double>(V(5, 0), 1.0)});
   EXPECT_THROW(oracle::compare_depth(c, Circle<double>(V(0, 0), 1.0), 1.0), Unsupported);
   EXPECT_THROW(oracle::compare_depth(Circle<double>(V(0, 0), 1.0), c, 1.0), Unsupported);
+}
+
+TEST(OracleDepth, ACompoundOfOneChildIsThatChildPlacedByItsTransform) {
+  // A unit circle moved to (0.5, 0) by its child transform, then the body turned a quarter and
+  // moved by (1, 0): its centre is at (1, 0.5), so a unit circle at (1, 2) overlaps it 0.5 deep.
+  using Child = Compound<double>::Child;
+  const Compound<double> c =
+      Compound<double>::make_placed(
+          {Child{Circle<double>(V(0, 0), 1.0), Transform<double>::make_translation(V(0.5, 0)).value()}})
+          .value();
+  const oracle::Placed placed(Shape<double>(c), V(1, 0), V(0, 1));
+  const Circle<double> other(V(1, 2), 1.0);
+  EXPECT_EQ(oracle::compare_depth(placed, other, 0.5), 0);
+  EXPECT_EQ(oracle::compare_depth(other, placed, 0.25), 1);
+  EXPECT_EQ(oracle::compare_boundary_distance(placed, V(1, 0.5), 1.0), 0);  // its centre, 1 from the boundary
+  EXPECT_NEAR(oracle::approx_signed_distance(placed, other), -0.5, 1e-12);
 }
 
 TEST(OracleBand, PrimitivesUseTheSignedDistance) {

@@ -145,7 +145,8 @@ bool separates(const A& a, const B& b, const Vec2<T>& t) {
 /// Exact sign of (depth(a, b) - len). depth = infimum of |t| over translations t of a after which
 /// the shapes do not overlap (0 when they do not overlap now). With cores Pa, Pb, radii summing
 /// to r and D = Pb - Pa (Minkowski difference): depth = dist(0, boundary of D) + r when the cores
-/// meet, else max(0, r - dist(Pa, Pb)). Pairs of primitives only; a compound throws Unsupported.
+/// meet, else max(0, r - dist(Pa, Pb)). Pairs of primitives only (a compound of one child counts as
+/// that child placed by its child transform); any other compound throws Unsupported.
 template <OracleInput A, OracleInput B>
 int compare_depth(const A& a, const B& b, double len) {
   return exact::compare_depth(as_exact_input(a), as_exact_input(b), len);
@@ -160,8 +161,9 @@ bool inside_box(const S& s, const Aabb<T>& box) {
 }
 
 /// Exact sign of (distance from p to the shape's boundary - d). For p inside the closed shape
-/// this is the point's depth (distance to the nearest boundary point). A compound answers only
-/// for p outside all its children (min over children); p inside a child throws Unsupported.
+/// this is the point's depth (distance to the nearest boundary point). A compound of one child
+/// answers as that child placed by its child transform; a larger compound answers only for p
+/// outside all its children (min over children), and p inside a child throws Unsupported.
 template <OracleInput S, Scalar T>
 int compare_boundary_distance(const S& s, const Vec2<T>& p, double d) {
   return exact::compare_boundary_distance(as_exact_input(s), p.template cast<double>(), d);
