@@ -76,6 +76,12 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return pair_law(&laws::placed_outputs<T>);
     case Law::PlacedResolution:
       return pair_law(&laws::placed_resolution<T>);
+    case Law::PlacedSeparation:
+      return pair_law(&laws::placed_separation<T>);
+    case Law::PlacedFeatureIds:
+      return pair_law(&laws::placed_feature_ids<T>);
+    case Law::PlacedSpeculative:
+      return pair_law(&laws::placed_speculative<T>);
     case Law::PlacedCovariance:
       return [=] {
         auto [a, b] = gen_pair<T>(ka, kb);

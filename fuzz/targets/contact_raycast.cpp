@@ -1,7 +1,8 @@
 // Fuzz target contact_raycast: contact(), distance() and raycast() against the exact oracle
 // (laws "contact", "distance" and "raycast"). Shapes placed by transforms: the same queries with
-// transforms judged on the exact images (laws "placed_outputs" and "placed_shape", the ray's
-// origin as the point for contains()).
+// transforms judged on the exact images (laws "placed_outputs", "placed_separation",
+// "placed_feature_ids", "placed_speculative" and "placed_shape", the ray's origin as the point for
+// contains()).
 //
 // Input: flags byte (bit 0: double; bit 6: a transform follows each shape), shape a [xa], shape b
 // [xb], then a ray cast at a: origin x y, direction x y, max_t (raw bit patterns of the scalar).
@@ -62,6 +63,9 @@ void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const T
   try {
     if (placed) {
       require_placed("placed_outputs", laws::placed_outputs(a, xa, b, xb), a, xa, some(b), xb);
+      require_placed("placed_separation", laws::placed_separation(a, xa, b, xb), a, xa, some(b), xb);
+      require_placed("placed_feature_ids", laws::placed_feature_ids(a, xa, b, xb), a, xa, some(b), xb);
+      require_placed("placed_speculative", laws::placed_speculative(a, xa, b, xb), a, xa, some(b), xb);
     } else {
       require(laws::Law::Contact, laws::contact_law(a, b), a, some(b));
       require(laws::Law::Distance, laws::distance_law(a, b), a, some(b));

@@ -125,7 +125,8 @@ int round_trip_other_suites() {
     const bool pair = row.inputs == laws::LawInputs::Pair;
     laws::Case c = laws::make_case<T>(row.law, a, pair ? std::optional<Shape<T>>(b) : std::nullopt, held, "self-test");
     if (row.suite == laws::LawSuite::Placed && row.inputs != laws::LawInputs::TransformValues) c.transform_a = xa;
-    if (row.law == Law::PlacedAgreement || row.law == Law::PlacedOutputs || row.law == Law::PlacedResolution)
+    if (row.law == Law::PlacedAgreement || row.law == Law::PlacedOutputs || row.law == Law::PlacedResolution ||
+        row.law == Law::PlacedSeparation || row.law == Law::PlacedFeatureIds || row.law == Law::PlacedSpeculative)
       c.transform_b = xb;
     if (row.law == Law::Cast || row.law == Law::CastSymmetry) c.transform_b = xb;
     c.px = 0.5;

@@ -396,6 +396,12 @@ Verdict replay_as(const Case& c) {
       const std::vector<T> x = values();
       return transform_rejection<T>(std::span<const T>(x));
     }
+    case Law::PlacedSeparation:
+      return placed_separation(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedFeatureIds:
+      return placed_feature_ids(shape_a(), xa, shape_b(), xb);
+    case Law::PlacedSpeculative:
+      return placed_speculative(shape_a(), xa, shape_b(), xb);
     case Law::Cast:
       return cast_law(shape_a(), shape_b(), motion);
     case Law::CastSymmetry:

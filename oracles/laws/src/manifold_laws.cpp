@@ -1,4 +1,6 @@
-// The laws on contact manifolds: per-point separations, feature ids, speculative contacts.
+// The laws on contact manifolds: per-point separations, feature ids, speculative contacts, for
+// shapes in world space and for shapes placed by body transforms (one implementation: the
+// world-space laws are the placed ones with two identities).
 
 #include "support.hpp"
 
@@ -29,13 +31,41 @@ struct Judgement {
   }
 };
 
+/// The pair a manifold law judges: a and b, each placed by its body transform. With two
+/// identities (the world-space laws) the world-space queries, bounds and tolerance are used, as
+/// the laws were written for them.
+template <Scalar T>
+struct PairIn {
+  Shape<T> a, b;
+  Transform<T> xa, xb;
+
+  bool world() const { return xa.is_identity() && xb.is_identity(); }
+  /// contact(), with a speculative distance when given.
+  std::optional<Contact<T>> contact(std::optional<T> speculative = std::nullopt) const {
+    if (world()) return speculative ? collide::contact(a, b, *speculative) : collide::contact(a, b);
+    return speculative ? collide::contact(a, xa, b, xb, *speculative) : collide::contact(a, xa, b, xb);
+  }
+  bool overlapping() const { return world() ? collide::overlaps(a, b) : collide::overlaps(a, xa, b, xb); }
+  /// The exact images.
+  oracle::Placed exact_a() const { return oracle::placed(a, xa); }
+  oracle::Placed exact_b() const { return oracle::placed(b, xb); }
+  Aabb<T> box_a() const { return world() ? bounds(a) : bounds(a, xa); }
+  Aabb<T> box_b() const { return world() ? bounds(b) : bounds(b, xb); }
+  /// The unit of the rounded outputs' error.
+  double tolerance() const { return world() ? rounding_tolerance(a, b) : rounding_tolerance(a, xa, b, xb); }
+  std::string text() const {
+    return world() ? "a = " + describe(a) + "; b = " + describe(b)
+                   : "a = " + detail::placed_text(a, xa) + "; b = " + detail::placed_text(b, xb);
+  }
+};
+
 /// Runs a manifold law body; an exception from the oracle or the library fails the law.
 template <Scalar T, class F>
-Verdict judged(const Shape<T>& a, const Shape<T>& b, F&& body) {
+Verdict judged(const PairIn<T>& in, F&& body) {
   Judgement j;
-  j.context = "a = " + describe(a) + "; b = " + describe(b);
+  j.context = in.text();
   try {
-    j.v.relation = relation(a, b);
+    j.v.relation = in.world() ? relation(in.a, in.b) : detail::placed_relation(in.exact_a(), in.exact_b());
     body(j);
   } catch (const std::exception& e) {
     j.broken("no exception", std::string("exception: ") + e.what());
@@ -43,11 +73,11 @@ Verdict judged(const Shape<T>& a, const Shape<T>& b, F&& body) {
   return j.v;
 }
 
-/// judged() on contact(a, b), when there is one.
+/// judged() on the pair's contact, when there is one.
 template <Scalar T, class F>
-Verdict judged_contact(const Shape<T>& a, const Shape<T>& b, F&& body) {
-  return judged(a, b, [&](Judgement& j) {
-    const auto c = contact(a, b);
+Verdict judged_contact(const PairIn<T>& in, F&& body) {
+  return judged(in, [&](Judgement& j) {
+    const auto c = in.contact();
     if (c) {
       body(j, *c);
     } else {
@@ -60,15 +90,43 @@ Verdict judged_contact(const Shape<T>& a, const Shape<T>& b, F&& body) {
 /// rounding of the point and of the separation to T, and the normal's rounding over half the
 /// separation.
 template <Scalar T>
-double point_bound(const Shape<T>& a, const Shape<T>& b, double separation) {
-  const double scale = std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
-  return 4 * rounding_tolerance(a, b) + 2 * detail::eps<T>() * scale + 8 * detail::eps<T>() * std::fabs(separation) +
+double point_bound(const PairIn<T>& in, double separation) {
+  const double scale = std::max(::collide::detail::scale_of(in.box_a()), ::collide::detail::scale_of(in.box_b()));
+  return 4 * in.tolerance() + 2 * detail::eps<T>() * scale + 8 * detail::eps<T>() * std::fabs(separation) +
          2 * double(std::numeric_limits<T>::denorm_min());
 }
 
-/// A primitive placed by its child transform (the identity outside compounds).
+/// A primitive of a placed shape: a compound's child with its child transform (or the shape
+/// itself with the identity), and the shape's body transform.
 template <Scalar T>
-using Placed = typename Compound<T>::Child;
+struct Placed {
+  Primitive<T> shape;
+  Transform<T> transform;  ///< the child transform
+  Transform<T> body;
+
+  /// The primitive alone, placed as in its shape: a compound of it with its child transform when
+  /// the body is not the identity (the body transform then places that compound).
+  Shape<T> alone() const { return Shape<T>(Compound<T>::make_placed({{shape, transform}}).value()); }
+  /// Its exact image: the body after the child transform.
+  oracle::Placed exact() const {
+    if (transform.is_identity()) return oracle::placed(shape, body);
+    return body.is_identity() ? oracle::placed(shape, transform) : oracle::placed(alone(), body);
+  }
+  /// A point of the primitive's frame in the world (rounded in double).
+  Vec2c apply(const Vec2c& x) const { return body.apply(transform.apply(x)); }
+  std::string text() const {
+    return describe(shape, transform) +
+           (body.is_identity() ? "" : " in a body at p=" + vec(body.position()) + " q=" + vec(body.rotation()));
+  }
+};
+
+/// The primitives of s placed by body.
+template <Scalar T>
+std::vector<Placed<T>> placed_parts(const Shape<T>& s, const Transform<T>& body) {
+  std::vector<Placed<T>> out;
+  for (auto& c : detail::placed_primitives_of(s)) out.push_back({std::move(c.shape), c.transform, body});
+  return out;
+}
 
 /// The primitive a feature id's child index names (nullptr when the index is out of range).
 template <class P>
@@ -84,19 +142,21 @@ struct FeatureShape {
   std::vector<std::array<Vec2c, 2>> segments;
   double radius = 0;
 };
+/// The core's points of a primitive as feature.hpp numbers them (empty when the numbering is not
+/// rebuilt, as feature_shape() says), and its radius.
 template <Scalar T>
-bool feature_shape(const Primitive<T>& p, FeatureKind kind, unsigned index, FeatureShape& out) {
+std::vector<Vec2c> feature_core(const Primitive<T>& p, double& radius) {
   std::vector<Vec2c> core;
   std::visit(
       [&](const auto& s) {
         using S = std::remove_cvref_t<decltype(s)>;
         if constexpr (std::is_same_v<S, Circle<T>>) {
           core = {widen(s.center())};
-          out.radius = s.radius();
+          radius = s.radius();
         } else if constexpr (std::is_same_v<S, Capsule<T>>) {
           core = {widen(s.a())};
           if (s.b() != s.a()) core.push_back(widen(s.b()));
-          out.radius = s.radius();
+          radius = s.radius();
         } else if constexpr (std::is_same_v<S, Aabb<T>>) {
           const Vec2c lo = widen(s.min()), hi = widen(s.max());
           if (lo.x() == hi.x() || lo.y() == hi.y()) {
@@ -120,6 +180,12 @@ bool feature_shape(const Primitive<T>& p, FeatureKind kind, unsigned index, Feat
         }
       },
       p);
+  return core;
+}
+
+template <Scalar T>
+bool feature_shape(const Primitive<T>& p, FeatureKind kind, unsigned index, FeatureShape& out) {
+  const std::vector<Vec2c> core = feature_core(p, out.radius);
   const std::size_t n = core.size();
   if (n == 0) return false;
   auto edge = [&](std::size_t i) { return std::array<Vec2c, 2>{core[i % n], core[(i + 1) % n]}; };
@@ -153,10 +219,10 @@ std::array<Vec2c, 2> surface_points(const Contact<T>& c, int i) {
 /// The primitive pair of point i (children named by its id); false, with the law broken, when an
 /// id names a child that does not exist.
 template <Scalar T>
-bool point_pair(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i, const Placed<T>*& pa,
+bool point_pair(Judgement& j, const PairIn<T>& in, const Contact<T>& c, int i, const Placed<T>*& pa,
                 const Placed<T>*& pb, std::vector<Placed<T>>& ka, std::vector<Placed<T>>& kb) {
-  ka = detail::placed_primitives_of(a);
-  kb = detail::placed_primitives_of(b);
+  ka = placed_parts(in.a, in.xa);
+  kb = placed_parts(in.b, in.xb);
   const FeatureId& id = c.ids[std::size_t(i)];
   pa = child_named(ka, id.child_a);
   pb = child_named(kb, id.child_b);
@@ -169,27 +235,27 @@ bool point_pair(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contac
 
 /// The separation requirements of one point (see manifold_separation in laws.hpp).
 template <Scalar T>
-bool check_point_separation(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i) {
+bool check_point_separation(Judgement& j, const PairIn<T>& in, const Contact<T>& c, int i) {
   const double s = c.separations[std::size_t(i)];
   if (!std::isfinite(s)) return !j.broken("a finite separation", "separation " + num(s));
   const Placed<T>*pa = nullptr, *pb = nullptr;
   std::vector<Placed<T>> ka, kb;
-  if (!point_pair(j, a, b, c, i, pa, pb, ka, kb)) return false;
-  const double bound = point_bound(a, b, s);
+  if (!point_pair(j, in, c, i, pa, pb, ka, kb)) return false;
+  const double bound = point_bound(in, s);
   const std::array<Vec2c, 2> x = surface_points(c, i);
   const Placed<T>* prims[2] = {pa, pb};
   for (int k = 0; k < 2; ++k) {
-    const oracle::Placed p = oracle::placed(prims[k]->shape, prims[k]->transform);
+    const oracle::Placed p = prims[k]->exact();
     if (!detail::near_boundary(p, x[std::size_t(k)], bound)) {
       return !j.broken("point " + std::to_string(i) + ": " + (k == 0 ? "a" : "b") + "'s surface point " +
                            (k == 0 ? "p - n s/2" : "p + n s/2") + " within " + num(bound) + " of its boundary",
                        "point " + vec(c.points[std::size_t(i)]) + ", separation " + num(s) + ", normal " +
                            vec(c.normal) + ": surface point " + vec(Vec2<double>(x[std::size_t(k)])) +
-                           " is farther (from " + describe(prims[k]->shape, prims[k]->transform) + ")");
+                           " is farther (from " + prims[k]->text() + ")");
     }
   }
   // No point deeper than the exact depth of its pair (nor nearer than its exact gap).
-  const oracle::Placed sa = oracle::placed(pa->shape, pa->transform), sb = oracle::placed(pb->shape, pb->transform);
+  const oracle::Placed sa = pa->exact(), sb = pb->exact();
   if (s < 0 && -s - bound > 0 && oracle::compare_depth(sa, sb, -s - bound) < 0) {
     return !j.broken("point " + std::to_string(i) + " no deeper than the exact depth + " + num(bound),
                      "separation " + num(s) + ", exact depth ~" + num(-oracle::approx_signed_distance(sa, sb)));
@@ -201,21 +267,45 @@ bool check_point_separation(Judgement& j, const Shape<T>& a, const Shape<T>& b, 
   return true;
 }
 
+/// Whether a placed box or polygon is thinner than w (the least, over its edges, of its farthest
+/// vertex's distance from the edge's line): its image's corners, rounded by about w, need not keep
+/// the numbering of its stored ones, as for an OBB thinner than its corners' rounding.
+template <Scalar T>
+bool thinner_than(const Placed<T>& part, double w) {
+  double radius = 0;
+  const std::vector<Vec2c> core = feature_core(part.shape, radius);
+  const std::size_t n = core.size();
+  if (n < 3) return false;
+  double thinnest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2c e = core[(i + 1) % n] - core[i];
+    const double len = e.norm();
+    if (!(len > 0)) return true;
+    double far = 0;
+    for (const Vec2c& x : core) far = std::max(far, std::fabs(perp(e).dot(x - core[i])) / len);
+    thinnest = std::min(thinnest, far);
+  }
+  return thinnest <= w;
+}
+
 /// The feature-id requirements of one point: each id names a feature of its shape that lies
 /// near that shape's surface point.
 template <Scalar T>
-bool check_point_features(Judgement& j, const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, int i,
-                          std::string& skipped) {
+bool check_point_features(Judgement& j, const PairIn<T>& in, const Contact<T>& c, int i, std::string& skipped) {
   const Placed<T>*pa = nullptr, *pb = nullptr;
   std::vector<Placed<T>> ka, kb;
-  if (!point_pair(j, a, b, c, i, pa, pb, ka, kb)) return false;
+  if (!point_pair(j, in, c, i, pa, pb, ka, kb)) return false;
   const FeatureId& id = c.ids[std::size_t(i)];
   const std::array<Vec2c, 2> x = surface_points(c, i);
-  const double bound = point_bound(a, b, c.separations[std::size_t(i)]) + 4 * double(c.depth);
+  const double bound = point_bound(in, c.separations[std::size_t(i)]) + 4 * double(c.depth);
   const Placed<T>* prims[2] = {pa, pb};
   const FeatureKind kinds[2] = {id.kind_a, id.kind_b};
   const unsigned index[2] = {id.index_a, id.index_b};
   for (int k = 0; k < 2; ++k) {
+    if (!in.world() && thinner_than(*prims[k], bound)) {
+      skipped += " a placed image thinner than its rounding";
+      continue;
+    }
     FeatureShape f;
     if (!feature_shape(prims[k]->shape, kinds[k], index[k], f)) {
       if (std::holds_alternative<Obb<T>>(prims[k]->shape)) {
@@ -224,11 +314,11 @@ bool check_point_features(Judgement& j, const Shape<T>& a, const Shape<T>& b, co
       }
       return !j.broken("point " + std::to_string(i) + "'s id names a feature of " + (k == 0 ? "a" : "b"),
                        std::string(kinds[k] == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(index[k]) +
-                           " of " + describe(prims[k]->shape, prims[k]->transform));
+                           " of " + prims[k]->text());
     }
-    // The feature as its child transform places it (rounded in double: within the bound).
+    // The feature as its child and body transforms place it (rounded in double: within the bound).
     for (auto& seg : f.segments) {
-      for (Vec2c& q : seg) q = prims[k]->transform.apply(q);
+      for (Vec2c& q : seg) q = prims[k]->apply(q);
     }
     double d = std::numeric_limits<double>::infinity();
     for (const auto& seg : f.segments) d = std::min(d, distance_to_segment(x[std::size_t(k)], seg));
@@ -273,15 +363,17 @@ std::string ids_text(const Contact<T>& c) {
 /// pair whose depth peaks there, as a point at a circle's centre, beside one whose depth falls on
 /// one side and rises on the other).
 template <Scalar T>
-bool tied_child_pairs(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, const Contact<T>& moved, double move) {
+bool tied_child_pairs(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move) {
   const FeatureId &was = c.ids[0], &now = moved.ids[0];
   if (was.child_a == now.child_a && was.child_b == now.child_b) return false;
-  const std::vector<Placed<T>> ka = detail::placed_primitives_of(a), kb = detail::placed_primitives_of(b);
+  const std::vector<Placed<T>> ka = placed_parts(in.a, in.xa), kb = placed_parts(in.b, in.xb);
   const Placed<T>*pa = child_named(ka, now.child_a), *pb = child_named(kb, now.child_b);
   if (pa == nullptr || pb == nullptr) return false;
-  const auto other = std::visit(
-      [&](const auto& x, const auto& y) { return contact(x, pa->transform, y, pb->transform); }, pa->shape, pb->shape);
-  return other && std::fabs(double(other->depth) - double(c.depth)) <= point_bound(a, b, double(c.depth)) + 2 * move;
+  const auto other =
+      in.world() ? std::visit([&](const auto& x, const auto& y) { return contact(x, pa->transform, y, pb->transform); },
+                              pa->shape, pb->shape)
+                 : contact(pa->alone(), in.xa, pb->alone(), in.xb);
+  return other && std::fabs(double(other->depth) - double(c.depth)) <= point_bound(in, double(c.depth)) + 2 * move;
 }
 
 /// Whether the face that moved's contact names is, on the unmoved shapes, as shallow as c's within
@@ -292,53 +384,96 @@ bool tied_child_pairs(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c,
 /// whose normals differ (by more than 2.5 degrees): parallel faces tied up to rounding must keep
 /// their order, and an incident face changing under one normal is no tie of depths.
 template <Scalar T>
-bool tied_faces(const Shape<T>& a, const Shape<T>& b, const Contact<T>& c, const Contact<T>& moved, double move) {
+bool tied_faces(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move) {
   const Vec2<double> n = moved.normal.template cast<double>();
   if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) return false;
   if (n.dot(c.normal.template cast<double>()) > 0.999) return false;
-  const double reach = double(c.depth) + 2 * move + point_bound(a, b, double(c.depth));
-  return oracle::separates(a, b, Vec2<double>(-n * reach));
+  const double reach = double(c.depth) + 2 * move + point_bound(in, double(c.depth));
+  return oracle::separates(in.exact_a(), in.exact_b(), Vec2<double>(-n * reach));
 }
 
-/// b moved by t, or nullopt when the move has no representation in T.
+/// Whether the ids of c and of moved differ only where one names a vertex of a child and the other
+/// an edge of that child ending at the vertex, with c's surface point on that child within reach
+/// of the vertex: the radius, twice the move, and 2 sqrt(size bound). Which of a vertex and an edge
+/// ending at it is nearer turns on two squared distances that differ by (l |d|)^2 for a point
+/// l |d| along the edge past the vertex, each rounded by about its length (at most size) times the
+/// bound: within 2 sqrt(size bound) of the vertex the rounding chooses, and either is right.
 template <Scalar T>
-std::optional<Shape<T>> moved(const Shape<T>& b, const Vec2<T>& t) {
-  return std::visit(
+bool tied_vertex_edge(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move, double size) {
+  const std::vector<Placed<T>> ka = placed_parts(in.a, in.xa), kb = placed_parts(in.b, in.xb);
+  const double reach = 2 * move + 2 * std::sqrt(size * point_bound(in, 0));
+  // One side of point i of c against the same side of moved's point k.
+  const auto side_tied = [&](int i, int side, FeatureKind k0, unsigned i0, FeatureKind k1, unsigned i1,
+                             std::uint16_t child) {
+    if (k0 == k1) return i0 == i1;
+    const unsigned vertex = k0 == FeatureKind::Vertex ? i0 : i1, edge = k0 == FeatureKind::Edge ? i0 : i1;
+    const Placed<T>* part = child_named(side == 0 ? ka : kb, child);
+    if (part == nullptr) return false;
+    double radius = 0;
+    const std::vector<Vec2c> core = feature_core(part->shape, radius);
+    const std::size_t n = core.size();
+    if (n < 2 || vertex >= n) return false;
+    const bool incident = n == 2 ? edge <= 1 : edge < n && (edge == vertex || edge == (vertex + n - 1) % n);
+    if (!incident) return false;
+    const Vec2c x = surface_points(c, i)[std::size_t(side)];
+    return (x - part->apply(core[vertex])).norm() <= radius + reach;
+  };
+  const auto point_tied = [&](int i, int k) {
+    const FeatureId &p = c.ids[std::size_t(i)], &q = moved.ids[std::size_t(k)];
+    if (p.child_a != q.child_a || p.child_b != q.child_b) return false;
+    return side_tied(i, 0, p.kind_a, p.index_a, q.kind_a, q.index_a, p.child_a) &&
+           side_tied(i, 1, p.kind_b, p.index_b, q.kind_b, q.index_b, p.child_b);
+  };
+  if (c.count != moved.count) return false;
+  if (c.count == 1) return point_tied(0, 0);
+  return (point_tied(0, 0) && point_tied(1, 1)) || (point_tied(0, 1) && point_tied(1, 0));
+}
+
+/// The pair with b moved by t in its own frame (its stored values; a placed b keeps its body
+/// transform, so that b's exact image moves by the turned t); nullopt, with the reason, when the
+/// move has no representation in T or does not add exactly to every stored position (only then
+/// does the motion from b - t to b + t pass through b).
+template <Scalar T>
+std::optional<PairIn<T>> with_b_moved(const PairIn<T>& in, const Vec2<T>& t, std::string& why) {
+  const auto m = std::visit(
       [&](const auto& s) -> std::optional<Shape<T>> {
-        const auto m = translated(s, t);
-        if (!m) return std::nullopt;
-        return Shape<T>(m.value());
+        const auto r = translated(s, t);
+        if (!r) return std::nullopt;
+        return Shape<T>(r.value());
       },
-      b);
+      in.b);
+  if (!m) return why = "move not representable", std::nullopt;
+  if (!detail::exact_move(in.b, *m, t)) return why = "move rounds", std::nullopt;
+  PairIn<T> out = in;
+  out.b = *m;
+  return out;
 }
 
-}  // namespace
-
 template <Scalar T>
-Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {
-  return judged_contact(a, b, [&](Judgement& j, const Contact<T>& k) {
+Verdict separation_of(const PairIn<T>& in) {
+  return judged_contact(in, [&](Judgement& j, const Contact<T>& k) {
     const Contact<T>* c = &k;
     j.v.account = "contact of " + std::to_string(c->count) + " points, separations " + num(c->separations[0]) +
                   (c->count > 1 ? ", " + num(c->separations[1]) : "");
     for (int i = 0; i < c->count; ++i) {
-      if (!(c->separations[std::size_t(i)] <= point_bound(a, b, 0))) {
-        j.broken("point " + std::to_string(i) + " penetrating or touching (separation <= " + num(point_bound(a, b, 0)) +
+      if (!(c->separations[std::size_t(i)] <= point_bound(in, 0))) {
+        j.broken("point " + std::to_string(i) + " penetrating or touching (separation <= " + num(point_bound(in, 0)) +
                      ") without a speculative distance",
                  "separation " + num(c->separations[std::size_t(i)]));
         return;
       }
-      if (!check_point_separation(j, a, b, *c, i)) return;
+      if (!check_point_separation(j, in, *c, i)) return;
     }
   });
 }
 
 template <Scalar T>
-Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
-  return judged_contact(a, b, [&](Judgement& j, const Contact<T>& k) {
+Verdict feature_ids_of(const PairIn<T>& in) {
+  return judged_contact(in, [&](Judgement& j, const Contact<T>& k) {
     const Contact<T>* c = &k;
     std::string skipped;
     for (int i = 0; i < c->count; ++i) {
-      if (!check_point_features(j, a, b, *c, i, skipped)) return;
+      if (!check_point_features(j, in, *c, i, skipped)) return;
     }
     if (c->count == 2 && c->ids[0] == c->ids[1]) {
       j.broken("two points with different ids", "both " + ids_text(*c));
@@ -354,14 +489,14 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
     const auto side = [](const Aabb<T>& x) {
       return std::max(double(x.max().x() - x.min().x()), double(x.max().y() - x.min().y()));
     };
-    const double size = std::max(side(bounds(a)), side(bounds(b)));
+    const double size = std::max(side(in.box_a()), side(in.box_b()));
     const double scale =
-        size > 0 ? size : std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
+        size > 0 ? size : std::max(::collide::detail::scale_of(in.box_a()), ::collide::detail::scale_of(in.box_b()));
     if (!(scale > 0) || !std::isfinite(scale)) return;
-    // At least T's spacing at b's largest coordinate, so that 3 and 4 times it add exactly to
-    // b's stored positions (a sum crossing a power of two may still round: exact_move checks);
-    // up to 2^-12 of the size, beyond which the move is not tiny next to the shapes: not used.
-    const double reach = ::collide::detail::scale_of(bounds(b));
+    // At least T's spacing at b's largest stored coordinate, so that 3 and 4 times it add exactly
+    // to b's stored positions (a sum crossing a power of two may still round: with_b_moved
+    // checks); up to 2^-12 of the size, beyond which the move is not tiny next to the shapes: not used.
+    const double reach = ::collide::detail::scale_of(bounds(in.b));
     const int want = std::ilogb(scale) - 20;
     const int spacing = reach > 0 ? std::ilogb(reach) - std::numeric_limits<T>::digits + 1 : want;
     if (spacing > want + 8) {
@@ -371,28 +506,30 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
     const T quarter = static_cast<T>(std::ldexp(1.0, std::max(want, spacing)));
     if (!(quarter > 0) || !std::isfinite(double(quarter))) return;
     const Vec2<T> t(T(3) * quarter, T(4) * quarter);
-    const auto plus = moved(b, Vec2<T>(t)), minus = moved(b, Vec2<T>(-t));
+    std::string why;
+    const auto plus = with_b_moved(in, t, why);
+    const auto minus = plus ? with_b_moved(in, Vec2<T>(-t), why) : std::nullopt;
     if (!plus || !minus) {
-      j.v.account += "; move not representable";
+      j.v.account += "; " + why;
       return;
     }
-    if (!detail::exact_move(b, *plus, t) || !detail::exact_move(b, *minus, Vec2<T>(-t))) {
-      j.v.account += "; move rounds";
-      return;
-    }
-    const auto cp = contact(a, *plus), cm = contact(a, *minus);
+    const auto cp = plus->contact(), cm = minus->contact();
     if (!cp || !cm || cp->count != c->count || cm->count != c->count || id_keys(*cp) != id_keys(*cm)) {
       j.v.account += "; features change within the move";
       return;
     }
     if (id_keys(*c) != id_keys(*cp)) {
       const double move = t.template cast<double>().norm();
-      if (tied_child_pairs(a, b, *c, *cp, move)) {
+      if (tied_child_pairs(in, *c, *cp, move)) {
         j.v.account += "; child pairs tied for the deepest (either may be reported)";
         return;
       }
-      if (tied_faces(a, b, *c, *cp, move)) {
+      if (tied_faces(in, *c, *cp, move)) {
         j.v.account += "; faces tied for the least depth within the move (either may be reported)";
+        return;
+      }
+      if (tied_vertex_edge(in, *c, *cp, move, scale)) {
+        j.v.account += "; a vertex and an edge ending at it tied within the rounding (either may be reported)";
         return;
       }
       j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself", ids_text(*c));
@@ -401,20 +538,21 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
 }
 
 template <Scalar T>
-Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
-  return judged(a, b, [&](Judgement& j) {
+Verdict speculative_of(const PairIn<T>& in) {
+  return judged(in, [&](Judgement& j) {
     // A speculative distance of about a tenth of the pair's size, a power of two (exact in T).
     const auto box = [](const Aabb<T>& x) {
       return std::max(double(x.max().x() - x.min().x()), double(x.max().y() - x.min().y()));
     };
-    const double size = std::max(box(bounds(a)), box(bounds(b)));
+    const double size = std::max(box(in.box_a()), box(in.box_b()));
     const T spec = static_cast<T>(std::ldexp(1.0, std::ilogb(std::max(size, 1e-30)) - 3));
-    const bool over = overlaps(a, b);
-    const auto c = contact(a, b, spec);
-    const double bound = point_bound(a, b, double(spec));
+    const bool over = in.overlapping();
+    const auto c = in.contact(spec);
+    const double bound = point_bound(in, double(spec));
+    const oracle::Placed ea = in.exact_a(), eb = in.exact_b();
     j.v.account = "speculative " + num(spec) + ": " + (c ? "contact" : "none") + (over ? " (overlapping)" : "");
     if (over) {
-      const auto plain = contact(a, b);
+      const auto plain = in.contact();
       if (!c || c->normal != plain->normal || c->depth != plain->depth || c->count < plain->count) {
         j.broken("for an overlapping pair, contact(a, b)'s normal and depth and at least its points",
                  c ? "normal " + vec(c->normal) + " depth " + num(c->depth) + " count " + std::to_string(c->count)
@@ -422,15 +560,15 @@ Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
         return;
       }
     } else if (!c) {
-      if (oracle::compare_distance(a, b, double(spec) - bound) < 0) {
+      if (oracle::compare_distance(ea, eb, double(spec) - bound) < 0) {
         j.broken("a speculative contact for a gap below " + num(double(spec) - bound),
-                 "none; exact gap ~" + num(oracle::approx_signed_distance(a, b)));
+                 "none; exact gap ~" + num(oracle::approx_signed_distance(ea, eb)));
       }
       return;
     } else {
-      if (oracle::compare_distance(a, b, double(spec) + bound) > 0) {
+      if (oracle::compare_distance(ea, eb, double(spec) + bound) > 0) {
         j.broken("no contact for a gap above " + num(double(spec) + bound),
-                 "a contact; exact gap ~" + num(oracle::approx_signed_distance(a, b)));
+                 "a contact; exact gap ~" + num(oracle::approx_signed_distance(ea, eb)));
         return;
       }
       if (c->depth != 0) {
@@ -444,15 +582,15 @@ Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
         return;
       }
       const double s0 = std::min(double(c->separations[0]), c->count > 1 ? double(c->separations[1]) : 1e300);
-      if (s0 - bound > 0 && !oracle::separates(a, b, Vec2<double>(n * (s0 - bound)))) {
+      if (s0 - bound > 0 && !oracle::separates(ea, eb, Vec2<double>(n * (s0 - bound)))) {
         j.broken("a moved by normal * (separation - " + num(bound) + ") still apart from b",
                  "overlapping after " + vec(Vec2<double>(n * (s0 - bound))) + " (separation " + num(s0) + ")");
         return;
       }
       // The smallest separation is the gap.
-      if (oracle::compare_distance(a, b, s0 - bound) < 0 || oracle::compare_distance(a, b, s0 + bound) > 0) {
+      if (oracle::compare_distance(ea, eb, s0 - bound) < 0 || oracle::compare_distance(ea, eb, s0 + bound) > 0) {
         j.broken("the smallest separation within " + num(bound) + " of the exact gap",
-                 "separation " + num(s0) + ", exact gap ~" + num(oracle::approx_signed_distance(a, b)));
+                 "separation " + num(s0) + ", exact gap ~" + num(oracle::approx_signed_distance(ea, eb)));
         return;
       }
     }
@@ -462,15 +600,45 @@ Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
                  "separation " + num(c->separations[std::size_t(i)]));
         return;
       }
-      if (!check_point_separation(j, a, b, *c, i)) return;
+      if (!check_point_separation(j, in, *c, i)) return;
     }
   });
 }
 
-#define COLLIDE_MANIFOLD_LAWS_INSTANTIATE(T)                                 \
-  template Verdict manifold_separation<T>(const Shape<T>&, const Shape<T>&); \
-  template Verdict manifold_ids<T>(const Shape<T>&, const Shape<T>&);        \
-  template Verdict manifold_speculative<T>(const Shape<T>&, const Shape<T>&);
+}  // namespace
+
+template <Scalar T>
+Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {
+  return separation_of(PairIn<T>{a, b, {}, {}});
+}
+template <Scalar T>
+Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b) {
+  return feature_ids_of(PairIn<T>{a, b, {}, {}});
+}
+template <Scalar T>
+Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b) {
+  return speculative_of(PairIn<T>{a, b, {}, {}});
+}
+template <Scalar T>
+Verdict placed_separation(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
+  return separation_of(PairIn<T>{a, b, xa, xb});
+}
+template <Scalar T>
+Verdict placed_feature_ids(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
+  return feature_ids_of(PairIn<T>{a, b, xa, xb});
+}
+template <Scalar T>
+Verdict placed_speculative(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
+  return speculative_of(PairIn<T>{a, b, xa, xb});
+}
+
+#define COLLIDE_MANIFOLD_LAWS_INSTANTIATE(T)                                                                          \
+  template Verdict manifold_separation<T>(const Shape<T>&, const Shape<T>&);                                          \
+  template Verdict manifold_ids<T>(const Shape<T>&, const Shape<T>&);                                                 \
+  template Verdict manifold_speculative<T>(const Shape<T>&, const Shape<T>&);                                         \
+  template Verdict placed_separation<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);  \
+  template Verdict placed_feature_ids<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&); \
+  template Verdict placed_speculative<T>(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);
 
 COLLIDE_MANIFOLD_LAWS_INSTANTIATE(float)
 COLLIDE_MANIFOLD_LAWS_INSTANTIATE(double)

@@ -100,6 +100,17 @@ template <Scalar T>
 std::string describe(const Primitive<T>& s) {
   return std::visit([](const auto& x) { return describe(x); }, s);
 }
+/// A shape and its body transform.
+template <Scalar T>
+std::string placed_text(const Shape<T>& s, const Transform<T>& x) {
+  return describe(s) + " at p=" + vec(x.position()) + " q=" + vec(x.rotation());
+}
+
+/// The exact relation of two placed shapes (Contained is not told apart from Overlapping).
+inline Relation placed_relation(const oracle::Placed& a, const oracle::Placed& b) {
+  if (!oracle::overlaps(a, b)) return Relation::Separated;
+  return oracle::within_band(a, b, 0.0) ? Relation::Touching : Relation::Overlapping;
+}
 
 template <Scalar T>
 constexpr double eps() {

@@ -17,6 +17,8 @@ namespace collide::laws {
 
 using detail::describe;
 using detail::num;
+using detail::placed_relation;
+using detail::placed_text;
 using detail::quarter_turn;
 using detail::vec;
 using detail::yes;
@@ -52,11 +54,6 @@ Verdict judged(const std::string& context, F&& body) {
 }
 
 template <Scalar T>
-std::string placed_text(const Shape<T>& s, const Transform<T>& x) {
-  return describe(s) + " at p=" + vec(x.position()) + " q=" + vec(x.rotation());
-}
-
-template <Scalar T>
 std::string pair_context(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {
   return "a = " + placed_text(a, xa) + "; b = " + placed_text(b, xb);
 }
@@ -65,12 +62,6 @@ std::string pair_context(const Shape<T>& a, const Transform<T>& xa, const Shape<
 /// range a stored circle accepts).
 inline oracle::Placed point_input(const Vec2<double>& p) {
   return oracle::Placed(Shape<double>(collide::detail::ShapeAccess::circle<double>(p, 0.0)));
-}
-
-/// The exact relation of two placed shapes (Contained is not told apart from Overlapping).
-inline Relation placed_relation(const oracle::Placed& a, const oracle::Placed& b) {
-  if (!oracle::overlaps(a, b)) return Relation::Separated;
-  return oracle::within_band(a, b, 0.0) ? Relation::Touching : Relation::Overlapping;
 }
 
 /// Every mapped coordinate of s's stored positions under x is exact in U (double: the images; T:

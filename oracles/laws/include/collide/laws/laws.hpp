@@ -305,7 +305,11 @@ Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
 /// ids and point count, the unmoved pair gives those ids too (the features did not change on the
 /// way), unless a compound's unmoved pair has the child pair the moves name tied for the deepest
 /// within the bound (the contract's deepest child pair is either then: a tie that holds at the
-/// unmoved configuration only, as a point at a circle's centre beside a face exactly as deep).
+/// unmoved configuration only, as a point at a circle's centre beside a face exactly as deep), or
+/// the ids differ only by a vertex against an edge of the same child ending at it, with the
+/// unmoved point's surface point on that child within its radius + 2 |t| + 2 sqrt(size bound) of
+/// the vertex (which of the two is nearer is a difference of squared distances, each rounded by
+/// its length times the bound: within that reach of the vertex the rounding chooses).
 /// OBBs thinner than their corners' rounding are not rebuilt (named in the account).
 template <Scalar T>
 Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
@@ -319,6 +323,20 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
 /// separation at most speculative + bound and judged as in manifold_separation.
 template <Scalar T>
 Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b);
+
+/// Laws placed_separation, placed_feature_ids and placed_speculative: separation, feature_ids and
+/// speculative for a placed by xa and b placed by xb, judged on the exact images (a point's pair:
+/// the children its id names, each the exact image under its child transform and then its body's),
+/// with rounding_tolerance(a, xa, b, xb) as the bound's unit and bounds(s, x) for the sizes; for
+/// feature_ids' stability b moves by +t and -t in its own frame (its stored values, as in
+/// feature_ids; its body transform kept), so that its exact image moves by the turned t. With two
+/// identities each is its world-space law.
+template <Scalar T>
+Verdict placed_separation(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
+template <Scalar T>
+Verdict placed_feature_ids(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
+template <Scalar T>
+Verdict placed_speculative(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
 }  // namespace collide::laws
 
