@@ -366,6 +366,39 @@ TEST(ManifoldRegression, CapsuleEndingOnTheEndOfAFlatBoxGetsAMidwayPoint) {
   }
 }
 
+/// A box 1.5 x 10^-8 across inside one a thousand times larger, both turned by (0.6, 0.8) and
+/// placed 1.6 x 10^-4 from the origin: the small box's face is the reference face, and the large
+/// box's face, clipped to its span 5.7 x 10^-6 away, must end at the small box's corners. The
+/// direction of the face's rounded ends is off by their rounding over its length (10^-12), which
+/// put the clipped ends, and the small box's surface points, 7 x 10^-18 beyond its corners (the
+/// bound is 4 x 10^-18); the face's normal is not.
+TEST(ManifoldRegression, ShortReferenceFaceFarFromTheOriginClipsAlongItsNormal) {
+  using V = Vec2<double>;
+  const Transform<double> x =
+      *Transform<double>::make_with_rotation(V(-0x1.4000000000005p-13, -0x1.f400000000008p-15), V(0.6, 0.8));
+  const Aabb<double> small(V(0x1.fep-20, -0x1.008p-18), V(0x1.01p-19, -0x1.ffp-19));
+  const Obb<double> large = *Obb<double>::make_with_axis(V(0x1p-19, -0x1p-18), V(0x1.8p-18, 0x1p-17), V(0, -1));
+  const auto c = contact(small, x, large, x);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  // The small box's corners in the world, in long double (exact enough here).
+  using L = long double;
+  const L q0 = x.rotation().x(), q1 = x.rotation().y(), px = x.position().x(), py = x.position().y();
+  const L xs[2] = {small.min().x(), small.max().x()}, ys[2] = {small.min().y(), small.max().y()};
+  for (int i = 0; i < 2; ++i) {
+    const L sx = L(c->points[std::size_t(i)].x()) - L(c->normal.x()) * L(c->separations[std::size_t(i)]) / 2;
+    const L sy = L(c->points[std::size_t(i)].y()) - L(c->normal.y()) * L(c->separations[std::size_t(i)]) / 2;
+    L nearest = 1;
+    for (const L cx : xs) {
+      for (const L cy : ys) {
+        const L wx = q0 * cx - q1 * cy + px, wy = q1 * cx + q0 * cy + py;
+        nearest = std::min(nearest, std::hypot(sx - wx, sy - wy));
+      }
+    }
+    EXPECT_LE(double(nearest), 1e-19) << "point " << i << ": the small box's surface point is off its corner";
+  }
+}
+
 /// A short segment lying on a long one, both at 2 x 10^7 along (3, 4): both clipped ends are at
 /// separation 0, up to rounding, and both must stay points at the segment and moved along the line
 /// either way (one end rounded out of reach dropped its point, a different one at each position).

@@ -257,19 +257,25 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
   return incident_edge(inc, best);
 }
 
-/// Step 4: clips a two-point incident face to 0 <= (x - r1) . tangent <= |tangent|^2. Returns
-/// false when the face misses the reference face, or when clipping cannot be trusted: an incident
-/// face 2^20 times longer than the reference face moves its ends by ulps of the long face, more
-/// than the short face is long.
+/// Step 4: clips a two-point incident face to the reference face's span, 0 <= (x - r1) . u <=
+/// (r2 - r1) . u along the face's unit direction u = perp(normal). u comes from the face's normal,
+/// not from r2 - r1: the normal is a box's axis or a polygon's cached normal, turned exactly up to
+/// rounding, while r2 - r1 of a short face far from the origin points off by the rounding of its
+/// ends over its length, and the incident face, clipped a separation away, would be cut that far
+/// off the face's end. Returns false when the face misses the reference face, or when clipping
+/// cannot be trusted: an incident face 2^20 times longer than the reference face moves its ends by
+/// ulps of the long face, more than the short face is long.
 inline bool clip_to_reference_face(IncidentFace& face, const ReferenceFace& f) {
-  const Vec2c tangent = f.r2 - f.r1;
-  const Calc len2 = tangent.squaredNorm();
+  const Vec2c span = f.r2 - f.r1;
+  const Calc len2 = span.squaredNorm();
   std::array<Vec2c, 2>& ip = face.ends;
   const Calc inc_len2 = face.count == 2 ? (ip[1] - ip[0]).squaredNorm() : 0;
   if (inc_len2 > kClipLengthRatio * len2) return false;
   if (face.count != 2 || !(len2 > 0)) return true;
+  const Vec2c tangent(-f.normal.y(), f.normal.x());
+  const Calc end = span.dot(tangent);
   for (int side = 0; side < 2; ++side) {
-    const Calc lim = side == 0 ? 0 : len2;
+    const Calc lim = side == 0 ? 0 : end;
     const Calc sgn = side == 0 ? 1 : -1;
     const Calc d0 = sgn * ((ip[0] - f.r1).dot(tangent) - lim), d1 = sgn * ((ip[1] - f.r1).dot(tangent) - lim);
     if (d0 < 0 && d1 < 0) return false;
