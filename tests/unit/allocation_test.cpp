@@ -1,6 +1,7 @@
 // The hot path does not allocate: every query on every pair of kinds (both orders, both scalars,
-// concrete and variant arguments), every translation and every successful factory of a shape
-// with at most 8 vertices. This executable replaces the global operator new and counts the calls
+// concrete and variant arguments, with and without a speculative distance, compounds with and
+// without child transforms), every translation and every successful factory of a shape with at
+// most 8 vertices. This executable replaces the global operator new and counts the calls
 // made while a check runs; a failure names the query and the pair that allocated.
 //
 // Building a compound owns memory (its children), so compounds are built before counting starts;
@@ -90,6 +91,10 @@ void check_pair_queries() {
       keep(contact(b, a));
       keep(contact(va, vb));
     });
+    expect_none("speculative contact", [&] {
+      keep(contact(a, b, T(0.5)));
+      keep(contact(vb, va, T(0.5)));
+    });
     expect_none("resolve", [&] {
       keep(resolve(a, b));
       keep(resolve(b, a));
@@ -113,6 +118,8 @@ void check_pair_queries() {
         keep(overlaps(vb, xb, va, x));
         keep(contact(a, x, b, xb));
         keep(contact(vb, xb, va, x));
+        keep(contact(a, x, b, xb, T(0.5)));
+        keep(contact(vb, xb, va, x, T(0.5)));
         keep(resolve(a, x, b, xb));
         keep(resolve(vb, xb, va, x));
         keep(distance(a, x, b, xb));
@@ -129,6 +136,38 @@ void check_pair_queries() {
         keep(cast_tolerance(a, x, v, b, xb, still, T(2)));
       });
     }
+  }
+}
+
+/// The pair queries of a compound whose children carry their own transforms (built before
+/// counting: it owns them) against a shape of kind K, both orders, in world space and placed.
+template <ShapeKind K, Scalar T>
+void check_compound_with_child_transforms() {
+  using V = Vec2<T>;
+  const std::string label = std::string("compound with child transforms against ") + std::string(name(K));
+  std::vector<typename Compound<T>::Child> kids;
+  kids.push_back({Obb<T>::make(V(0, 0), V(T(1), T(0.25)), T(0.3)).value(), Transform<T>(V(T(0.5), T(0)), T(0.9))});
+  kids.push_back({Circle<T>(V(0, 0), T(0.5)), Transform<T>(V(T(-0.5), T(0.25)), T(0))});
+  const Shape<T> c(Compound<T>::make_placed(std::move(kids)).value());
+  const Transform<T> turned(V(T(0.25), T(-0.5)), T(0.7));
+  for (const T at : {T(0.5), T(2), T(5)}) {
+    const Shape<T> other(make_kind<K, T>(V(at, T(0.25)), T(1)));
+    EXPECT_EQ(0, allocations_in([&] {
+                keep(overlaps(c, other));
+                keep(contact(other, c));
+                keep(contact(c, other, T(0.5)));
+                keep(resolve(c, other));
+                keep(distance(other, c));
+                keep(overlaps(c, turned, other, Transform<T>()));
+                keep(contact(other, Transform<T>(), c, turned));
+                keep(contact(c, turned, other, Transform<T>(), T(0.5)));
+                keep(resolve(c, turned, other, Transform<T>()));
+                keep(distance(other, Transform<T>(), c, turned));
+                keep(raycast(c, turned, Ray<T>{V(-10, 0), V(1, 0)}, T(100)));
+                keep(contains(c, turned, V(0, 0)));
+                keep(bounds(c, turned));
+              }))
+        << label << " at x = " << at;
   }
 }
 
@@ -182,6 +221,11 @@ void check_shape_queries() {
 TYPED_TEST(Allocation, NoPairQueryAllocatesForAnyPairInEitherOrder) {
   using T = TypeParam;
   for_each_pair([]<ShapeKind A, ShapeKind B>() { check_pair_queries<A, B, T>(); });
+}
+
+TYPED_TEST(Allocation, NoQueryOnACompoundWithChildTransformsAllocates) {
+  using T = TypeParam;
+  for_each_kind([]<ShapeKind K>() { check_compound_with_child_transforms<K, T>(); });
 }
 
 TYPED_TEST(Allocation, NoShapeQueryOrTranslationAllocatesForAnyKind) {

@@ -225,6 +225,7 @@ TEST(ErrorNames, AreStable) {
   EXPECT_EQ(name(Error::NonConvex), "NonConvex");
   EXPECT_EQ(name(Error::NotARectangle), "NotARectangle");
   EXPECT_EQ(name(Error::EmptyCompound), "EmptyCompound");
+  EXPECT_EQ(name(Error::ZeroRotation), "ZeroRotation");
 }
 
 }  // namespace
