@@ -402,7 +402,7 @@ template <Scalar T>
 bool tied_vertex_edge(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move, double size) {
   const std::vector<Placed<T>> ka = placed_parts(in.a, in.xa), kb = placed_parts(in.b, in.xb);
   const double reach = 2 * move + 2 * std::sqrt(size * point_bound(in, 0));
-  // One side of point i of c against the same side of moved's point k.
+  // Side 0 (a) or 1 (b) of c's point i: its feature (k0, i0) against moved's (k1, i1) on that child.
   const auto side_tied = [&](int i, int side, FeatureKind k0, unsigned i0, FeatureKind k1, unsigned i1,
                              std::uint16_t child) {
     if (k0 == k1) return i0 == i1;
