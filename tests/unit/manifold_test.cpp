@@ -417,6 +417,66 @@ TEST(ManifoldRegression, SegmentLyingOnALongSegmentKeepsBothEnds) {
   }
 }
 
+/// A capsule lying along a box's bottom face, 0.125 deep, its end exactly below the box's corner,
+/// then 1.9 x 10^-5 either way along (3, 4): the faces are parallel and equally deep, and the
+/// box's face must stay the reference face throughout, in the box's frame and placed by a turned
+/// transform. At the corner the closest points are two vertices, and the capsule's side was named
+/// instead (a one-point contact in the frame, the capsule's face placed).
+TEST(ManifoldRegression, CapsuleEndBelowABoxCornerKeepsTheBoxFace) {
+  using V = Vec2<double>;
+  const Obb<double> box = *Obb<double>::make_with_axis(V(-2, -0.125), V(3, 1), V(-1, 0));
+  const Transform<double> x = *Transform<double>::make_with_rotation(V(-0x1.f400000000008p+5, -0x1.0400000000004p+6),
+                                                                     V(-0x1.f1216dba340c9p-1, -0x1.e9fb8d64830e3p-3));
+  for (const double k : {-1.0, 0.0, 1.0}) {
+    const V t = V(0x1.8p-17, 0x1p-16) * k;
+    const Capsule<double> capsule = *Capsule<double>::make(V(1, -2) + t, V(0, -2) + t, 1);
+    for (const bool placed : {false, true}) {
+      const auto c = placed ? contact(box, x, capsule, x) : contact(box, capsule);
+      ASSERT_TRUE(c.has_value());
+      ASSERT_EQ(c->count, 2) << "moved by " << k << " x t, placed " << placed;
+      EXPECT_EQ(c->ids[0], face_on_a(2, 0)) << "moved by " << k << " x t, placed " << placed;
+      EXPECT_EQ(c->ids[1], face_on_a(2, 1)) << "moved by " << k << " x t, placed " << placed;
+    }
+  }
+}
+
+/// A capsule's end level with a box's corner, beside the box's right face (the offset is
+/// perpendicular to that face): the closest points are the two vertices, and the point names them.
+/// A face through a closest vertex counts only beside a face of the other core (parallel faces);
+/// the capsule's side is not parallel here, and naming the box's side would change the id at this
+/// one configuration as the capsule moves past the corner.
+TEST(ManifoldRegression, CapsuleEndLevelWithABoxCornerNamesTheCorner) {
+  using V = Vec2<double>;
+  const Aabb<double> box(V(0, 0), V(2, 2));
+  const auto c = contact(box, *Capsule<double>::make(V(3, 2), V(4, 3), 1.5));
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 1);
+  EXPECT_EQ(c->ids[0], (FeatureId{0, 0, 2, 0, FeatureKind::Vertex, FeatureKind::Vertex}));
+}
+
+/// Parallel capsules 6.6 x 10^-6 apart with faces shorter than that (one point, along the
+/// points' direction), their top ends level, then 3.6 x 10^-11 either way along (3, 4): every
+/// pair of points on the common span is closest, and the point must name both sides, not the
+/// ends rounding picked (two vertices at level ends, an end and a side otherwise).
+TEST(ManifoldRegression, ParallelSegmentsCloserThanTheirLengthNameBothSides) {
+  using V = Vec2<double>;
+  const Capsule<double> a = *Capsule<double>::make(V(-0x1.48p-18, -0x1.2p-17), V(-0x1.48p-18, -0x1.ep-17), 0x1p-18);
+  const Transform<double> x = *Transform<double>::make_with_rotation(V(-0x1.0a00000000004p-13, -0x1.db00000000008p-13),
+                                                                     V(0x1.dfc2d59376aeep-2, 0x1.c4542b2ba24d7p-1));
+  for (const double k : {-1.0, 0.0, 1.0}) {
+    const V t = V(0x1.8p-36, 0x1p-35) * k;
+    const Capsule<double> b =
+        *Capsule<double>::make(V(-0x1.8p-17, -0x1.2p-17) + t, V(-0x1.8p-17, -0x1.4p-17) + t, 0x1.8p-19);
+    for (const bool placed : {false, true}) {
+      const auto c = placed ? contact(a, x, b, x) : contact(a, b);
+      ASSERT_TRUE(c.has_value());
+      ASSERT_EQ(c->count, 1) << "moved by " << k << " x t, placed " << placed;
+      EXPECT_EQ(c->ids[0].kind_a, FeatureKind::Edge) << "moved by " << k << " x t, placed " << placed;
+      EXPECT_EQ(c->ids[0].kind_b, FeatureKind::Edge) << "moved by " << k << " x t, placed " << placed;
+    }
+  }
+}
+
 /// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
 /// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
 /// between child pairs is measured at their deepest points, which the added point is not).

@@ -22,8 +22,10 @@
 /// A point of a face contact carries the reference face (an edge) on the shape that owns it and
 /// the incident vertex it comes from on the other shape; an incident vertex clipped back to the
 /// reference face's side keeps that vertex's id, so the ids stay the same while the two faces stay
-/// the reference and incident faces. A point of two rounded cores apart (circles, capsules) names
-/// the closest features of the cores.
+/// the reference and incident faces. Of two parallel faces equally deep up to rounding, a's is the
+/// reference face. A point of two rounded cores apart (circles, capsules) names the closest
+/// features of the cores; between parallel faces, where every point of their common span is
+/// closest, it names both edges.
 
 #include <cstdint>
 

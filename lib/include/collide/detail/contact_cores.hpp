@@ -107,33 +107,127 @@ inline Calc point_scale(const Core& p, const Core& q) noexcept {
   return scale;
 }
 
-/// The unit normal of two cores' closest points cl (from p toward q) and their distance along it.
-/// When a closest point lies inside a face at least as long as the offset, that face's normal:
-/// its direction is off by the rounding of its ends over its length, the offset's by the same
-/// rounding over the offset's length, and over a short offset and a deep overlap that tilt would
-/// push a shape off a flat face short of clearing it. Else the points' own direction (at two
-/// vertices the tilt costs little; a face shorter than the offset is the less certain one).
+/// The tolerance within which a face does not take over from an equally deep face found before it
+/// (feature.hpp: ids stay put for parallel faces): a quarter of the pair's rounding unit, so that
+/// the chosen depth (within 2 ties of the least) stays within half a unit in either argument order.
+inline Calc tie_of(Calc scale) noexcept {
+  return kFaceOrderTie * kUnitRoundoff * scale;
+}
+
+/// A face of a core that one of the closest points lies on: its first vertex and its index (a
+/// segment's side 0 or 1).
+struct FaceOn {
+  std::size_t start;
+  unsigned index;
+};
+
+/// The face of core c that its closest point (on feature f; toward: the offset from it to the
+/// other core's, d up to sign) lies on: an edge's own, or at a vertex a face through it
+/// perpendicular to the offset up to tie and facing the other core (the point lies on it too).
+/// Where two parallel faces overlap, which of their points the search returns is rounding's
+/// choice, and the face found must not follow it. nullopt for a point core or no such face.
+inline std::optional<FaceOn> face_on(const Core& c, const CoreFeature& f, const Vec2c& toward, Calc tie) {
+  const std::size_t n = c.size();
+  if (n < 2) return std::nullopt;
+  // |e| lies between its larger coordinate and their sum: the square root only in between.
+  const auto perpendicular = [&](const Vec2c& e) {
+    const Calc along = std::abs(toward.dot(e)), ex = std::abs(e.x()), ey = std::abs(e.y());
+    if (e == Vec2c::Zero() || along > tie * (ex + ey)) return false;
+    return along <= tie * std::max(ex, ey) || along <= tie * norm_of(e);
+  };
+  if (n == 2) {  // a segment's sides share its one edge; side 0 faces right of a -> b
+    const Vec2c e = c[1] - c[0];
+    if (f.edge) return FaceOn{0, f.index};
+    if (!perpendicular(e)) return std::nullopt;
+    return FaceOn{0, Vec2c(e.y(), -e.x()).dot(toward) > 0 ? 0u : 1u};
+  }
+  if (f.edge) return FaceOn{f.index, f.index};
+  for (const std::size_t i : {std::size_t(f.index), f.index == 0 ? n - 1 : f.index - 1}) {
+    const Vec2c e = c[next_index(i, n)] - c[i];
+    if (perpendicular(e) && Vec2c(e.y(), -e.x()).dot(toward) > 0) return FaceOn{i, unsigned(i)};
+  }
+  return std::nullopt;
+}
+
+/// The faces the closest points cl lie on (face_on()), a face found at a vertex only beside a face
+/// of the other core: the two are then parallel up to the tie and overlap, and every pair of
+/// points on their common span is closest. A vertex nearest a vertex or the inside of a face is
+/// the feature itself. points: point_scale(p, q).
+inline std::pair<std::optional<FaceOn>, std::optional<FaceOn>> closest_faces(const Core& p, const Core& q,
+                                                                             const Closest& cl, Calc points) {
+  const Vec2c d = cl.on_q - cl.on_p;
+  const Calc tie = tie_of(points);
+  std::optional<FaceOn> fp = face_on(p, cl.feature_p, d, tie), fq = face_on(q, cl.feature_q, -d, tie);
+  if (!fq && !cl.feature_p.edge) fp.reset();
+  if (!fp && !cl.feature_q.edge) fq.reset();
+  return {fp, fq};
+}
+
+/// The closest points' features, a vertex named by the face it lies on (closest_faces()), so that
+/// a single point between parallel faces names them whichever of their points the search found.
+inline std::pair<CoreFeature, CoreFeature> closest_features(const Core& p, const Core& q, const Closest& cl,
+                                                            Calc points) {
+  const auto [fp, fq] = closest_faces(p, q, cl, points);
+  return {fp ? CoreFeature{fp->index, true} : cl.feature_p, fq ? CoreFeature{fq->index, true} : cl.feature_q};
+}
+
+/// The normal closest_normal() finds for two cores' closest points, and the face it names.
 struct ClosestNormal {
   Vec2c normal;
   Calc distance;
-  int owner = -1;     ///< the core whose face gave the normal (0: p, 1: q), -1 for the points' own
+  int owner = -1;     ///< the core whose face is named (0: p, 1: q), -1 for the points' own direction
   unsigned face = 0;  ///< that face's index (a segment's side 0 or 1)
 };
-inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest& cl) {
+
+/// Face f of core c's unit normal toward the other core along d (the offset from p to q), when
+/// the face is no shorter than d (d2: its squared length); else zero.
+inline Vec2c face_normal_along(const Core& c, const FaceOn& f, const Vec2c& d, Calc d2) noexcept {
+  const Vec2c e = c[next_index(f.start, c.size())] - c[f.start];
+  if (e.squaredNorm() < d2) return Vec2c::Zero();
+  const Vec2c n = unit_of(Vec2c(e.y(), -e.x()));
+  return n.dot(d) < 0 ? Vec2c(-n) : n;
+}
+
+/// closest_normal() beyond its common cases: a vertex on a face, parallel faces, short faces.
+[[gnu::noinline]] inline ClosestNormal closest_normal_by_faces(const Core& p, const Core& q, const Closest& cl,
+                                                               Calc points) {
   const Vec2c d = cl.on_q - cl.on_p;
-  for (int owner = 1; owner >= 0; --owner) {
-    const Core& c = owner == 1 ? q : p;
-    const CoreFeature& f = owner == 1 ? cl.feature_q : cl.feature_p;
-    if (!f.edge || c.size() < 2) continue;
-    const std::size_t i = c.size() == 2 ? 0 : f.index;  // a segment's sides share its one edge
-    const Vec2c e = c[i + 1 < c.size() ? i + 1 : 0] - c[i];
-    if (e.squaredNorm() < d.squaredNorm()) continue;
-    Vec2c n = unit_of(Vec2c(e.y(), -e.x()));
-    if (n.dot(d) < 0) n = -n;
-    if (n != Vec2c::Zero()) return {n, d.dot(n), owner, f.index};
+  const Calc d2 = d.squaredNorm();
+  const auto [fp, fq] = closest_faces(p, q, cl, points < 0 ? point_scale(p, q) : points);
+  if (fp) {
+    if (const Vec2c n = face_normal_along(p, *fp, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 0, fp->index};
+  }
+  if (fq) {
+    if (const Vec2c n = face_normal_along(q, *fq, d, d2); n != Vec2c::Zero())
+      return {n, d.dot(n), fp ? 0 : 1, (fp ? fp : fq)->index};
   }
   const Calc dist = norm_of(d);
   return {direction_of(d, dist), dist};
+}
+
+/// The unit normal of two cores' closest points cl (from p toward q) and their distance along it.
+/// When a closest point lies on a face (closest_faces()) at least as long as the offset, that
+/// face's normal: its direction is off by the rounding of its ends over its length, the offset's
+/// by the same rounding over the offset's length, and over a short offset and a deep overlap that
+/// tilt would push a shape off a flat face short of clearing it. Else the points' own direction
+/// (at two vertices the tilt costs little; a face shorter than the offset is the less certain
+/// one). When both cores have a face (parallel up to the tie) the first core's is named, with the
+/// longer one's normal, as least_penetration_by() keeps the first core's face on a tie: a pair
+/// resting face to face names the same face whether found by its closest points or by its faces.
+/// points: point_scale(p, q), computed if negative and needed.
+inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest& cl, Calc points = -1) {
+  // The common cases first, as closest_normal_by_faces() would find them: the first core's point
+  // inside a long face, or the second's beside a vertex with no face through it along the offset.
+  const Vec2c d = cl.on_q - cl.on_p;
+  const Calc d2 = d.squaredNorm();
+  if (cl.feature_p.edge && p.size() > 1) {
+    const FaceOn f{p.size() == 2 ? 0 : cl.feature_p.index, cl.feature_p.index};
+    if (const Vec2c n = face_normal_along(p, f, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 0, f.index};
+  } else if (cl.feature_q.edge && q.size() > 1 && points >= 0 && !face_on(p, cl.feature_p, d, tie_of(points))) {
+    const FaceOn f{q.size() == 2 ? 0 : cl.feature_q.index, cl.feature_q.index};
+    if (const Vec2c n = face_normal_along(q, f, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 1, f.index};
+  }
+  return closest_normal_by_faces(p, q, cl, points);
 }
 
 /// The face of least penetration: which core owns it, its ends and its outward normal.
@@ -405,15 +499,17 @@ inline CoreContact clip_to_closest_face(const Core& p, const Core& q, const Clos
 inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core& q, const Closest& cl,
                                                        Calc speculative = 0, const Vec2c* normals_p = nullptr,
                                                        const Vec2c* normals_q = nullptr) {
-  const ClosestNormal cn = closest_normal(p, q, cl);
-  if (!(cn.distance > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q))) return std::nullopt;
+  const Calc points = point_scale(p, q);
+  const ClosestNormal cn = closest_normal(p, q, cl, points);
+  if (!(cn.distance > kOverlapErrorFactor * kUnitRoundoff * points)) return std::nullopt;
   CoreContact out = clip_to_closest_face(p, q, cn, speculative, normals_p, normals_q);
   out.depth = std::max(Calc(0), p.radius + q.radius - cn.distance);
   if (out.count > 0) return out;
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
   store_separations(out.separations, cn.distance - p.radius - q.radius, out.separations[1]);
-  store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
+  const auto [fp, fq] = closest_features(p, q, cl, points);
+  store_ids(out.ids, id_of(fp, fq), out.ids[1]);
   out.count = 1;
   return out;
 }
@@ -509,12 +605,6 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
   return out;
 }
 
-/// The tolerance within which a face does not take over from an equally deep face found before it
-/// (feature.hpp: ids stay put for parallel faces): a quarter of the pair's rounding unit, so that
-/// the chosen depth (within 2 ties of the least) stays within half a unit in either argument order.
-inline Calc tie_of(Calc scale) noexcept {
-  return kFaceOrderTie * kUnitRoundoff * scale;
-}
 /// tie_of() the pair's point scale.
 inline Calc owner_tie(const Core& p, const Core& q) noexcept {
   return tie_of(point_scale(p, q));
@@ -555,14 +645,17 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   const Calc gap = std::max(Calc(0), d - p.radius - q.radius);
   if (!(gap <= speculative)) return std::nullopt;
   CoreContact out;
-  if (d > kOverlapErrorFactor * kUnitRoundoff * point_scale(p, q)) {
-    const ClosestNormal cn = closest_normal(p, q, cl);
+  const Calc points = point_scale(p, q);
+  std::pair<CoreFeature, CoreFeature> features{cl.feature_p, cl.feature_q};
+  if (d > kOverlapErrorFactor * kUnitRoundoff * points) {
+    const ClosestNormal cn = closest_normal(p, q, cl, points);
     out = clip_to_closest_face(p, q, cn, speculative, nullptr, nullptr);
     if (out.count > 0) {
       out.overlapping = false;
       for (Calc& s : out.separations) s = std::max(s, Calc(0));
       return out;
     }
+    features = closest_features(p, q, cl, points);
   } else {
     out.normal = least_penetration(p, q).normal;
   }
@@ -570,7 +663,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = sp + (sq - sp) * 0.5;
   store_separations(out.separations, gap, out.separations[1]);
-  store_ids(out.ids, id_of(cl.feature_p, cl.feature_q), out.ids[1]);
+  store_ids(out.ids, id_of(features.first, features.second), out.ids[1]);
   out.count = 1;
   return out;
 }
