@@ -392,9 +392,17 @@ Verdict placed_image(const Shape<T>& s, const Transform<T>& x, const Shape<T>& o
     if (exact) {
       j.require(placed == built, "the answer for the world shape built by the factory", yes(placed));
       j.require(dp == db, "the distance of the built shape", num(dp) + " against " + num(db));
-      if (cp && cb) {
+      // A turned AABB's image is an OBB (its ids keep the box's numbering), whose contact is
+      // computed by another pair's code than the built AABB's: equal within the bounds only.
+      const bool turned_box = std::holds_alternative<Aabb<T>>(s) && x.rotation() != Vec2<T>(1, 0);
+      if (cp && cb && !turned_box) {
         j.require(cp->depth == cb->depth && cp->normal == cb->normal, "the contact of the built shape",
                   num(cp->depth) + " " + vec(cp->normal) + " against " + num(cb->depth) + " " + vec(cb->normal));
+      } else if (cp && cb) {
+        const double bound = output_bound<T>(rounding_tolerance(s, x, other, id) + rounding_tolerance(*w, other),
+                                             std::max(cp->depth, cb->depth));
+        j.require(std::fabs(double(cp->depth) - double(cb->depth)) <= bound,
+                  "the built shape's depth within " + num(bound), num(cp->depth) + " against " + num(cb->depth));
       }
       return;
     }

@@ -265,7 +265,8 @@ template <Scalar T>
 Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<T>& x);
 
 /// Law placed_image. A shape with transform x equals the world shape x(s) built by the factories in T:
-/// identical overlaps, distance and contact when every mapped value is exact in T; otherwise
+/// identical overlaps, distance and contact when every mapped value is exact in T (the depth of a
+/// turned AABB, an OBB then, within the bounds); otherwise
 /// overlaps() differs only within transform_tolerance(s, x) plus T's rounding of the built shape,
 /// and distances within the bounds.
 template <Scalar T>
