@@ -420,8 +420,8 @@ TEST(ManifoldRegression, SegmentLyingOnALongSegmentKeepsBothEnds) {
 /// A capsule lying along a box's bottom face, 0.125 deep, its end exactly below the box's corner,
 /// then 1.9 x 10^-5 either way along (3, 4): the faces are parallel and equally deep, and the
 /// box's face must stay the reference face throughout, in the box's frame and placed by a turned
-/// transform. At the corner the closest points are two vertices, and the capsule's side was named
-/// instead (a one-point contact in the frame, the capsule's face placed).
+/// transform. At the corner the closest points are two vertices, and a contact found from them
+/// must still name the box's face.
 TEST(ManifoldRegression, CapsuleEndBelowABoxCornerKeepsTheBoxFace) {
   using V = Vec2<double>;
   const Obb<double> box = *Obb<double>::make_with_axis(V(-2, -0.125), V(3, 1), V(-1, 0));
