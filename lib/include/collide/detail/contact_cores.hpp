@@ -163,11 +163,11 @@ inline std::pair<std::optional<FaceOn>, std::optional<FaceOn>> closest_faces(con
   return {fp, fq};
 }
 
-/// The closest points' features, a vertex named by the face it lies on (closest_faces()), so that
-/// a single point between parallel faces names them whichever of their points the search found.
-inline std::pair<CoreFeature, CoreFeature> closest_features(const Core& p, const Core& q, const Closest& cl,
-                                                            Calc points) {
-  const auto [fp, fq] = closest_faces(p, q, cl, points);
+/// The closest points' features, a vertex named by the face it lies on (fp and fq from
+/// closest_faces()), so that a single point between parallel faces names them whichever of their
+/// points the search found.
+inline std::pair<CoreFeature, CoreFeature> named_features(const Closest& cl, const std::optional<FaceOn>& fp,
+                                                          const std::optional<FaceOn>& fq) noexcept {
   return {fp ? CoreFeature{fp->index, true} : cl.feature_p, fq ? CoreFeature{fq->index, true} : cl.feature_q};
 }
 
@@ -177,7 +177,18 @@ struct ClosestNormal {
   Calc distance;
   int owner = -1;     ///< the core whose face is named (0: p, 1: q), -1 for the points' own direction
   unsigned face = 0;  ///< that face's index (a segment's side 0 or 1)
+  /// The closest points' features as named_features() names them, when closest_normal() needed
+  /// the faces to find the normal (else the caller finds them, if it needs them).
+  std::optional<std::pair<CoreFeature, CoreFeature>> features;
 };
+
+/// cn's named features, found now unless closest_normal() found them. points: point_scale(p, q).
+inline std::pair<CoreFeature, CoreFeature> closest_features(const Core& p, const Core& q, const Closest& cl,
+                                                            const ClosestNormal& cn, Calc points) {
+  if (cn.features) return *cn.features;
+  const auto [fp, fq] = closest_faces(p, q, cl, points);
+  return named_features(cl, fp, fq);
+}
 
 /// Face f of core c's unit normal toward the other core along d (the offset from p to q), when
 /// the face is no shorter than d (d2: its squared length); else zero.
@@ -194,15 +205,17 @@ inline Vec2c face_normal_along(const Core& c, const FaceOn& f, const Vec2c& d, C
   const Vec2c d = cl.on_q - cl.on_p;
   const Calc d2 = d.squaredNorm();
   const auto [fp, fq] = closest_faces(p, q, cl, points < 0 ? point_scale(p, q) : points);
+  const std::pair<CoreFeature, CoreFeature> features = named_features(cl, fp, fq);
   if (fp) {
-    if (const Vec2c n = face_normal_along(p, *fp, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 0, fp->index};
+    if (const Vec2c n = face_normal_along(p, *fp, d, d2); n != Vec2c::Zero())
+      return {n, d.dot(n), 0, fp->index, features};
   }
   if (fq) {
     if (const Vec2c n = face_normal_along(q, *fq, d, d2); n != Vec2c::Zero())
-      return {n, d.dot(n), fp ? 0 : 1, (fp ? fp : fq)->index};
+      return {n, d.dot(n), fp ? 0 : 1, (fp ? fp : fq)->index, features};
   }
   const Calc dist = norm_of(d);
-  return {direction_of(d, dist), dist};
+  return {direction_of(d, dist), dist, -1, 0, features};
 }
 
 /// The unit normal of two cores' closest points cl (from p toward q) and their distance along it.
@@ -222,10 +235,12 @@ inline ClosestNormal closest_normal(const Core& p, const Core& q, const Closest&
   const Calc d2 = d.squaredNorm();
   if (cl.feature_p.edge && p.size() > 1) {
     const FaceOn f{p.size() == 2 ? 0 : cl.feature_p.index, cl.feature_p.index};
-    if (const Vec2c n = face_normal_along(p, f, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 0, f.index};
+    if (const Vec2c n = face_normal_along(p, f, d, d2); n != Vec2c::Zero())
+      return {n, d.dot(n), 0, f.index, std::nullopt};
   } else if (cl.feature_q.edge && q.size() > 1 && points >= 0 && !face_on(p, cl.feature_p, d, tie_of(points))) {
     const FaceOn f{q.size() == 2 ? 0 : cl.feature_q.index, cl.feature_q.index};
-    if (const Vec2c n = face_normal_along(q, f, d, d2); n != Vec2c::Zero()) return {n, d.dot(n), 1, f.index};
+    if (const Vec2c n = face_normal_along(q, f, d, d2); n != Vec2c::Zero())
+      return {n, d.dot(n), 1, f.index, std::nullopt};
   }
   return closest_normal_by_faces(p, q, cl, points);
 }
@@ -508,7 +523,7 @@ inline std::optional<CoreContact> contact_from_closest(const Core& p, const Core
   const Vec2c sp = cl.on_p + out.normal * p.radius, sq = cl.on_q - out.normal * q.radius;
   out.points[0] = (sp + sq) * 0.5;
   store_separations(out.separations, cn.distance - p.radius - q.radius, out.separations[1]);
-  const auto [fp, fq] = closest_features(p, q, cl, points);
+  const auto [fp, fq] = closest_features(p, q, cl, cn, points);
   store_ids(out.ids, id_of(fp, fq), out.ids[1]);
   out.count = 1;
   return out;
@@ -655,7 +670,7 @@ inline std::optional<CoreContact> speculative_contact_at_scale(const Core& p, co
       for (Calc& s : out.separations) s = std::max(s, Calc(0));
       return out;
     }
-    features = closest_features(p, q, cl, points);
+    features = closest_features(p, q, cl, cn, points);
   } else {
     out.normal = least_penetration(p, q).normal;
   }
