@@ -149,9 +149,15 @@ Verdict touching(const Shape<T>& a, const Shape<T>& b);
 
 /// Law scene. A scene (the children of the compound `group`, each taken as a shape):
 /// broadphase::find_overlapping_shapes() lists exactly the pairs overlaps() reports one pair at a
-/// time, find_contacts() gives one contact per such pair identical to contact(), and
+/// time, find_contacts() gives one contact per such pair with contact()'s bits, and
 /// pairs_involving() on a DynamicTree of their bounds gives each pair of meeting boxes with a proxy
-/// in the first half exactly once.
+/// in the first half exactly once. Narrowphase::for_each_contact, on the shapes and up to three
+/// compounds of neighbouring shapes (every ordered pair under identities; then every pair once
+/// under one turned transform with a speculative distance, on the same object), reports exactly
+/// the pairs contact() finds, each once with contact()'s bits, kind pair by kind pair in the
+/// registry's order and by index within one; refuses a call from its own callback (Reentered)
+/// while another Narrowphase may be called there; and refuses a pair naming a shape beyond the
+/// list, in either place, or one transform fewer than shapes (BadPair), before any contact.
 template <Scalar T>
 Verdict scene(const Shape<T>& group);
 
