@@ -143,9 +143,10 @@ Motion<T> gen_motion(ShapeKind ka, ShapeKind kb) {
   return world ? m : placed_motion(m, m.aimed);
 }
 
-/// A sweep for the time-of-impact law: centre of rotation at an inner point, angle 0 at time 0
-/// (so the pose at time 0 is the identity up to rounding), turning by up to two turns, its
-/// centre moving toward `toward` or at random.
+/// A sweep for the time-of-impact law: centre of rotation at an inner point, which stays where
+/// it is at time 0; angle 0 at time 0 half the time (the pose at time 0 is then the identity up
+/// to rounding), else a turned start, so that a body that does not turn is still turned; turning
+/// by up to two turns, its centre moving toward `toward` or at random.
 template <Scalar T>
 Sweep<T> gen_sweep(const Shape<T>& s, const Vec2c& toward, double size) {
   Sweep<T> sw;
@@ -159,7 +160,9 @@ Sweep<T> gen_sweep(const Shape<T>& s, const Vec2c& toward, double size) {
   sw.c1 = to_t<T>(widen(sw.c0) + d);
   // Twice 0: a pair neither of which turns is cast as a translation.
   const std::vector<double> turns = {0, 0, 0.25, -0.25, 0.5, 1, -2, 1e-6, 0.125};
-  sw.a1 = T(*rc::gen::elementOf(turns) * 2 * std::numbers::pi);
+  const std::vector<double> starts = {0, 0, 0, 0, 0.1, -0.3, 0.25, 0.6};
+  sw.a0 = T(*rc::gen::elementOf(starts) * 2 * std::numbers::pi);
+  sw.a1 = T(double(sw.a0) + *rc::gen::elementOf(turns) * 2 * std::numbers::pi);
   return sw;
 }
 
