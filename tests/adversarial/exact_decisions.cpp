@@ -1,15 +1,15 @@
-// The adversarial check of "exact for every pair": overlaps() and contains() against the exact
-// oracle on cases built to sit at the boundary. Its generators are its own (not the property
-// suite's): random local shapes (rotated boxes at many angles, slivers, near-parallel edges,
-// compounds) are scaled (1e-30 .. 2^400) and offset (0, 1e6, 1e15, 2^100); shape b slides along
-// a direction until the answer flips (bisection on the double's bits, so the two sides are
-// adjacent values: exact touching whenever it is representable), and every coordinate of b is then
-// nudged by 1..4 ulps each way. Contains() likewise for a point sliding out of a shape.
+// The adversarial check of "exact for every pair": overlaps(), whether contact() exists, and
+// contains() against the exact oracle on cases built to sit at the boundary. Its generators are its own (not the
+// property suite's): random local shapes (rotated boxes at many angles, slivers, near-parallel edges, compounds) are
+// scaled (1e-30 .. 2^400) and offset (0, 1e6, 1e15, 2^100); shape b slides along a direction until the answer flips
+// (bisection on the double's bits, so the two sides are adjacent values: exact touching whenever it is representable),
+// and every coordinate of b is then nudged by 1..4 ulps each way. Contains() likewise for a point sliding out of a
+// shape.
 //
 // Usage: adversarial_exact_decisions [--cases N] [--seed S] [--save-cases DIR]. Prints the number
 // of cases judged, the time, the disagreements per pair; exits 1 on any disagreement. With
 // --save-cases, the first overlap disagreements of each pair are written there as agreement case
-// files (for tests/regressions/).
+// files, or contact case files when only contact() disagrees (for tests/regressions/).
 
 #include "collide/collide.hpp"
 #include "collide/laws/case_file.hpp"
@@ -323,26 +323,30 @@ std::string text(const Shape<T>& s) {
   return out;
 }
 
+/// overlaps(a, b) and whether contact(a, b) exists, each against the exact answer: a contact
+/// exists exactly when the shapes overlap, and its own path decides that near touching too.
 template <Scalar T>
 void judge_pair(Tally& t, const std::string& label, const Shape<T>& a, const Shape<T>& b) {
   const std::uint64_t before = detail::exact_evaluations;
   const bool got = overlaps(a, b);
   t.exact_calls += detail::exact_evaluations != before;
+  const bool met = contact(a, b).has_value();
   const bool exact = oracle::overlaps(a, b);
   ++t.cases;
   ++t.overlap_cases;
   ++t.per_label[label];
-  if (got == exact) return;
+  if (got == exact && met == exact) return;
   ++t.disagreements;
   if (++t.bad_label[label] <= 2 && !t.save_dir.empty()) {
-    const auto path =
-        laws::save_case(t.save_dir, laws::make_case<T>(laws::Law::Agreement, a, b, laws::agreement(a, b),
-                                                       "adversarial exact_decisions seed " + std::to_string(t.seed)));
+    const std::string source = "adversarial exact_decisions seed " + std::to_string(t.seed);
+    const auto path = laws::save_case(
+        t.save_dir, got != exact ? laws::make_case<T>(laws::Law::Agreement, a, b, laws::agreement(a, b), source)
+                                 : laws::make_case<T>(laws::Law::Contact, a, b, laws::contact_law(a, b), source));
     std::printf("saved %s\n", path.string().c_str());
   }
   if (t.printed++ < 8)
-    std::printf("DISAGREE %s: overlaps %d, exact %d\n  a = %s\n  b = %s\n", label.c_str(), got, exact, text(a).c_str(),
-                text(b).c_str());
+    std::printf("DISAGREE %s: overlaps %d, contact %d, exact %d\n  a = %s\n  b = %s\n", label.c_str(), got, met, exact,
+                text(a).c_str(), text(b).c_str());
 }
 
 template <Scalar T>
@@ -481,10 +485,10 @@ void pythagorean(Rng& g, Tally& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::uint64_t cases = 20000, seed = 1;
+  std::uint64_t cases = 200000, seed = 1;
   std::string save_dir;
   CLI::App app{"Adversarial boundary cases of the exact decisions, judged by the exact oracle"};
-  app.add_option("--cases", cases, "cases to generate");
+  app.add_option("--cases", cases, "cases to generate (ctest and the mutation score: the default)");
   app.add_option("--seed", seed, "generator seed");
   app.add_option("--save-cases", save_dir, "write each failing case as a case file into this folder");
   CLI11_PARSE(app, argc, argv);
