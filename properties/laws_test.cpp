@@ -180,6 +180,8 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return simple(&laws::manifold_separation<T>);
     case Law::FeatureIds:
       return simple(&laws::manifold_ids<T>);
+    case Law::Resting:
+      return simple(&laws::manifold_resting<T>);
     case Law::Speculative:
       return simple(&laws::manifold_speculative<T>);
     case Law::Touching:

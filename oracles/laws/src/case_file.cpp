@@ -377,6 +377,8 @@ Verdict replay_as(const Case& c) {
       return manifold_separation(shape_a(), shape_b());
     case Law::FeatureIds:
       return manifold_ids(shape_a(), shape_b());
+    case Law::Resting:
+      return manifold_resting(shape_a(), shape_b());
     case Law::Speculative:
       return manifold_speculative(shape_a(), shape_b());
     case Law::PlacedAgreement:

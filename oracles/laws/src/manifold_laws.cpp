@@ -605,8 +605,77 @@ Verdict speculative_of(const PairIn<T>& in) {
   });
 }
 
+/// A face of a core: its ends (in the core's turning order) and its outward unit normal.
+struct CoreFace {
+  Vec2c from, to, normal;
+};
+/// The faces of a core as feature_core() gives it: a polygon's edges, a segment's two sides.
+std::vector<CoreFace> faces_of(const std::vector<Vec2c>& core) {
+  std::vector<CoreFace> out;
+  const std::size_t n = core.size();
+  const auto face = [](const Vec2c& from, const Vec2c& to) {
+    const Vec2c e = to - from;
+    return CoreFace{from, to, Vec2c(e.y(), -e.x()) / e.norm()};
+  };
+  if (n == 2) {
+    out = {face(core[0], core[1]), face(core[1], core[0])};
+  } else if (n > 2) {
+    for (std::size_t i = 0; i < n; ++i) out.push_back(face(core[i], core[(i + 1) % n]));
+  }
+  return out;
+}
+
+/// Two faces resting on each other (see manifold_resting in laws.hpp).
+template <Scalar T>
+Verdict resting_of(const PairIn<T>& in) {
+  return judged_contact(in, [&](Judgement& j, const Contact<T>& c) {
+    if (std::holds_alternative<Compound<T>>(in.a) || std::holds_alternative<Compound<T>>(in.b)) {
+      j.v.account = "a compound: not judged";
+      return;
+    }
+    double ra = 0, rb = 0;
+    const std::vector<CoreFace> fa = faces_of(feature_core(primitives_of(in.a).front(), ra));
+    const std::vector<CoreFace> fb = faces_of(feature_core(primitives_of(in.b).front(), rb));
+    const Vec2c normal = widen(c.normal);
+    const double bound = point_bound(in, c.depth);
+    j.v.account = "no faces resting on each other";
+    for (const CoreFace& p : fa) {
+      const Vec2c ep = p.to - p.from, u = ep / ep.norm();
+      if (!((normal - p.normal).norm() <= 1e-6)) continue;  // the contact is not across this face
+      for (const CoreFace& q : fb) {
+        const Vec2c eq = q.to - q.from;
+        const double cross = ep.x() * eq.y() - ep.y() * eq.x();
+        if (!(ep.dot(eq) < 0 && std::fabs(cross) <= 1e-12 * ep.norm() * eq.norm())) continue;
+        const double gap = (q.from - p.from).dot(p.normal), depth = ra + rb - gap;
+        const double lo = std::max(p.from.dot(u), std::min(q.from.dot(u), q.to.dot(u)));
+        const double hi = std::min(p.to.dot(u), std::max(q.from.dot(u), q.to.dot(u)));
+        // A stretch shorter than the cores' distance across it leaves the normal to the closest points.
+        if (!(depth >= 0) || std::fabs(depth - double(c.depth)) > bound || !(hi - lo > std::max(gap, 0.0) + 64 * bound))
+          continue;
+        j.v.account = "faces resting on each other along [" + num(lo) + ", " + num(hi) + "] at depth " + num(depth);
+        if (c.count != 2) {
+          j.broken("two points, one at each end of the faces' common stretch [" + num(lo) + ", " + num(hi) + "]",
+                   std::to_string(c.count) + " point");
+          return;
+        }
+        const double s0 = widen(c.points[0]).dot(u), s1 = widen(c.points[1]).dot(u);
+        if (std::fabs(std::min(s0, s1) - lo) > 4 * bound || std::fabs(std::max(s0, s1) - hi) > 4 * bound) {
+          j.broken("points at the ends of the faces' common stretch [" + num(lo) + ", " + num(hi) + "] within " +
+                       num(4 * bound),
+                   "points along the faces at " + num(s0) + " and " + num(s1));
+          return;
+        }
+      }
+    }
+  });
+}
+
 }  // namespace
 
+template <Scalar T>
+Verdict manifold_resting(const Shape<T>& a, const Shape<T>& b) {
+  return resting_of(PairIn<T>{a, b, {}, {}});
+}
 template <Scalar T>
 Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {
   return separation_of(PairIn<T>{a, b, {}, {}});
@@ -633,6 +702,7 @@ Verdict placed_speculative(const Shape<T>& a, const Transform<T>& xa, const Shap
 }
 
 #define COLLIDE_MANIFOLD_LAWS_INSTANTIATE(T)                                                                          \
+  template Verdict manifold_resting<T>(const Shape<T>&, const Shape<T>&);                                             \
   template Verdict manifold_separation<T>(const Shape<T>&, const Shape<T>&);                                          \
   template Verdict manifold_ids<T>(const Shape<T>&, const Shape<T>&);                                                 \
   template Verdict manifold_speculative<T>(const Shape<T>&, const Shape<T>&);                                         \

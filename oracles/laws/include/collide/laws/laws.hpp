@@ -321,6 +321,19 @@ Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
 
+/// Law resting. Two primitives whose cores have faces exactly parallel (up to 1e-12 of their
+/// lengths' product) and facing each other, with contact(a, b)'s normal along the first face's
+/// outward normal (within 1e-6) and its depth the faces' own penetration (their lines' distance
+/// less the radii) within the bound: when the faces' common stretch along them is longer than the
+/// cores' distance across them (0 when the cores meet) plus 64 bounds, the contact has two points,
+/// at the stretch's two ends within 4 bounds along the faces (a box resting on a box or a capsule
+/// lying on a face does not rock on one point). A shorter stretch may give one point: across a
+/// gap longer than the faces, the normal follows the closest points (contact_cores.hpp,
+/// closest_normal). Compounds are not judged. bound: as manifold_separation's at the contact's
+/// depth.
+template <Scalar T>
+Verdict manifold_resting(const Shape<T>& a, const Shape<T>& b);
+
 /// Law speculative. contact(a, b, speculative) with speculative = 2^(ilogb(size) - 3), size the larger
 /// bounding-box side: for overlapping pairs it exists, with contact(a, b)'s normal and depth and at
 /// least its point count; for pairs apart it exists when the exact gap is below speculative - bound
