@@ -1,9 +1,10 @@
 // The adversarial check of "exact for every pair": overlaps(), whether contact() exists, and
-// contains() against the exact oracle on cases built to sit at the boundary. Its generators are its own (not the
-// property suite's): random local shapes (rotated boxes at many angles, slivers, near-parallel edges, compounds) are
-// scaled (1e-30 .. 2^400) and offset (0, 1e6, 1e15, 2^100); shape b slides along a direction until the answer flips
-// (bisection on the double's bits, so the two sides are adjacent values: exact touching whenever it is representable),
-// and every coordinate of b is then nudged by 1..4 ulps each way. Contains() likewise for a point sliding out of a
+// contains() against the exact oracle on cases built to sit at the boundary. Its generators are its
+// own (not the property suite's): random local shapes (rotated boxes at many angles, slivers,
+// near-parallel edges, compounds) are scaled (1e-30 .. 2^400) and offset (0, 1e6, 1e15, 2^100);
+// shape b slides along a direction until the answer flips (bisection on the double's bits, so the
+// two sides are adjacent values: exact touching whenever it is representable), and every coordinate
+// of b is then nudged by 1..4 ulps each way. Contains() likewise for a point sliding out of a
 // shape.
 //
 // Usage: adversarial_exact_decisions [--cases N] [--seed S] [--save-cases DIR]. Prints the number
