@@ -10,6 +10,7 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::documented_margin;
 using detail::farther_than;
 using detail::num;
 using detail::vec;
@@ -256,7 +257,7 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     // Minimality: |v| <= depth + margin + slack, i.e. depth >= |v| - margin - slack. The slack is
     // the computed depth's own error (4 tolerances, as the contact law allows) and the rounding of
     // |v| here; v itself is rounded toward zero in T, so its rounding needs no allowance.
-    const double margin = resolve_margin(a, b, len);
+    const double margin = documented_margin(a, b, len);
     const double slack = 4 * rounding_tolerance(a, b) + 4 * 0x1p-53 * len;
     // The gap left: at most twice margin + slack (the moved coordinates' rounding to T lies
     // within the margin's own term), so a margin grown from the other shape's extent fails.
