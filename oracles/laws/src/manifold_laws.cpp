@@ -639,7 +639,8 @@ Verdict resting_of(const PairIn<T>& in) {
     const Vec2c normal = widen(c.normal);
     const double bound = point_bound(in, c.depth);
     j.v.account = "no faces resting on each other";
-    for (const CoreFace& p : fa) {
+    for (std::size_t ip = 0; ip < fa.size(); ++ip) {
+      const CoreFace& p = fa[ip];
       const Vec2c ep = p.to - p.from, u = ep / ep.norm();
       if (!((normal - p.normal).norm() <= 1e-6)) continue;  // the contact is not across this face
       for (const CoreFace& q : fb) {
@@ -664,6 +665,17 @@ Verdict resting_of(const PairIn<T>& in) {
                        num(4 * bound),
                    "points along the faces at " + num(s0) + " and " + num(s1));
           return;
+        }
+        // Faces parallel to the bit are equally deep up to rounding: a's is the reference face.
+        for (std::size_t k = 0; cross == 0 && k < 2; ++k) {
+          const FeatureId& id = c.ids[k];
+          if (id.kind_a != FeatureKind::Edge || id.index_a != ip) {
+            j.broken("each point naming a's face " + std::to_string(ip) +
+                         " (of two faces parallel to the bit, a's is the reference face)",
+                     "point " + std::to_string(k) + " names a's " +
+                         (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(id.index_a));
+            return;
+          }
         }
       }
     }
