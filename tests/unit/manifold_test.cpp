@@ -454,6 +454,29 @@ TEST(ManifoldRegression, CapsuleEndLevelWithABoxCornerNamesTheCorner) {
   EXPECT_EQ(c->ids[0], (FeatureId{0, 0, 2, 0, FeatureKind::Vertex, FeatureKind::Vertex}));
 }
 
+/// A box's corner level with a capsule's end, inside its end cap, both placed at 1.7 x 10^7, then
+/// b moved by -+(3, 4) x 2^-17: the corner's foot on the capsule's side is a rounding tie with the
+/// end there, and at the level configuration the side's face clips the box's top face so that its
+/// far corner's clipped end lands exactly on the near corner. The one point must name the near
+/// corner (vertex 3) in all three, not the far corner whose end was carried onto it.
+TEST(ManifoldRegression, CornerLevelWithACapsuleEndKeepsItsIdThroughTheLevel) {
+  using V = Vec2<double>;
+  const Obb<double> a = *Obb<double>::make_with_axis(V(0x1.e849789d89d8ap+19, -0x1.e83e98ec4ec4fp+19), V(6, 2),
+                                                     V(0x1.d89d89d89d89ep-1, -0x1.89d89d89d89d9p-2));
+  const Transform<double> x = *Transform<double>::make_with_rotation(V(-0x1.e84a42762763p+23, 0x1.f78c9489d89e2p+22),
+                                                                     V(-0x1.ff207e2b9cbb6p-1, -0x1.de33739e82d32p-5));
+  for (const double k : {-1.0, 0.0, 1.0}) {
+    const V t = V(0x1.8p-16, 0x1p-15) * k;
+    const Capsule<double> b =
+        *Capsule<double>::make(V(0x1.e848ep+19, -0x1.e83ep+19) + t, V(0x1.e848cp+19, -0x1.e83ep+19) + t, 1);
+    const auto c = contact(a, x, b, x);
+    ASSERT_TRUE(c.has_value());
+    ASSERT_EQ(c->count, 1) << "moved by " << k << " x t";
+    EXPECT_EQ(c->ids[0].kind_a, FeatureKind::Vertex) << "moved by " << k << " x t";
+    EXPECT_EQ(c->ids[0].index_a, 3) << "moved by " << k << " x t";
+  }
+}
+
 /// Parallel capsules 6.6 x 10^-6 apart with faces shorter than that (one point, along the
 /// points' direction), their top ends level, then 3.6 x 10^-11 either way along (3, 4): every
 /// pair of points on the common span is closest, and the point must name both sides, not the

@@ -482,7 +482,14 @@ inline void keep_points_within_reach(const IncidentFace& face, const ReferenceFa
     out.ids[k] = face_point_id(f, face.vertices[i]);
     ++k;
   }
-  out.count = k == 2 && out.points[0] == out.points[1] ? 1 : int(k);
+  if (k == 2 && out.points[0] == out.points[1]) {
+    // Clipping carried one end onto the other: one point, named by the end that lies there
+    // unclipped, the vertex that keeps the point once the ends part.
+    const Core& inc = *f.inc;
+    if (face.ends[0] != inc[face.vertices[0]] && face.ends[1] == inc[face.vertices[1]]) out.ids[0] = out.ids[1];
+    k = 1;
+  }
+  out.count = int(k);
 }
 
 /// Step 1, with the normal of a face (closest_normal() found the closest points inside it) and
