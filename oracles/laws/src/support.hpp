@@ -124,13 +124,6 @@ bool is_compound(const Shape<T>& s) {
   return std::holds_alternative<Compound<T>>(s);
 }
 
-/// The largest absolute coordinate of a box.
-template <Scalar T>
-double scale_of_box(const Aabb<T>& b) {
-  return std::max({std::fabs(double(b.min().x())), std::fabs(double(b.min().y())), std::fabs(double(b.max().x())),
-                   std::fabs(double(b.max().y()))});
-}
-
 /// resolve()'s margin as resolve_margin()'s documentation states it, written out here so that the
 /// resolution laws judge the library's margin instead of taking it from the library:
 /// 4 * 64 * 2^-53 * s (s the pair's scale) + 8 eps_T (s_moved + depth) (s_moved the largest
@@ -146,14 +139,15 @@ double documented_margin(double s, double s_moved, double depth, double extra) {
 /// position of a child placed by a transform when larger (a move shifts that position).
 template <Scalar T>
 double documented_margin(const Shape<T>& a, const Shape<T>& b, double depth) {
-  double s_moved = scale_of_box(bounds(a));
+  const double s_a = ::collide::detail::scale_of(bounds(a));
+  double s_moved = s_a;
   if (const auto* c = std::get_if<Compound<T>>(&a); c && c->has_child_transforms()) {
     for (std::size_t i = 0; i < c->children().size(); ++i) {
       const Vec2<T> p = c->child_transform(i).position();
       s_moved = std::max({s_moved, std::fabs(double(p.x())), std::fabs(double(p.y()))});
     }
   }
-  const double s = std::max(scale_of_box(bounds(a)), scale_of_box(bounds(b)));
+  const double s = std::max(s_a, ::collide::detail::scale_of(bounds(b)));
   return documented_margin<T>(s, s_moved, depth, 2 * (placement_tolerance(a) + placement_tolerance(b)));
 }
 
@@ -163,9 +157,9 @@ template <Scalar T>
 double documented_margin(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb,
                          double depth) {
   if (xa.is_identity() && xb.is_identity()) return documented_margin(a, b, depth);
-  const double s_moved = std::max(
-      {scale_of_box(bounds(a, xa)), std::fabs(double(xa.position().x())), std::fabs(double(xa.position().y()))});
-  const double s = std::max(s_moved, scale_of_box(bounds(b, xb)));
+  const double s_moved = std::max({::collide::detail::scale_of(bounds(a, xa)), std::fabs(double(xa.position().x())),
+                                   std::fabs(double(xa.position().y()))});
+  const double s = std::max(s_moved, ::collide::detail::scale_of(bounds(b, xb)));
   return documented_margin<T>(s, s_moved, depth, 2 * overlap_tolerance(a, xa, b, xb));
 }
 
