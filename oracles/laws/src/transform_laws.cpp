@@ -329,7 +329,9 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
           j.require(oracle::compare_distance(ps, point_input(q), delta) <= 0,
                     "hit point within " + num(delta) + " of the shape", vec(hit->point));
           const double off = (o + d * t - q).norm();
-          j.require(off <= delta + (4 * detail::eps<T>() * t + 0x1p-1070) * d.norm() + 4 * detail::eps<T>() * q.norm(),
+          j.require(off <= delta +
+                               (4 * detail::eps<T>() * t + double(std::numeric_limits<T>::denorm_min())) * d.norm() +
+                               4 * detail::eps<T>() * q.norm(),
                     "hit point on the ray", "off by " + num(off));
         } else if (d.allFinite() && (d.x() != 0 || d.y() != 0)) {
           const Vec2c end = o + d * double(max_t);
