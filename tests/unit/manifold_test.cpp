@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace collide::test {
 namespace {
@@ -522,6 +523,42 @@ TEST(ManifoldRegression, SpeculativeDistanceKeepsTheChildPairOfAnOverlappingComp
     EXPECT_EQ(spec->depth, plain->depth) << "speculative 2^" << k;
     EXPECT_EQ(spec->ids[0].child_b, plain->ids[0].child_b) << "speculative 2^" << k;
   }
+}
+
+/// A triangle 10^-307 wide and 7.6 x 10^78 tall, its sharp vertex at 0.0078 above a circle
+/// whose top reaches 1.6 x 10^63 above the origin: the centre lies on the line of a long face,
+/// rounded to an excess of 0, 7.6 x 10^78 below the vertex. The depth is the vertex's (about
+/// 1.6 x 10^63), not the radius the centre's excess behind that face would give.
+TEST(ManifoldRegression, CircleFarBelowASharpVertexGetsTheVertexDepth) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> spike = *ConvexPolygon<double>::make(std::vector<V>{
+      V(0, 0x1.05000008p+262), V(0x1.ff000ea00005p-1020, 0x1.000000001p-7), V(0x0.00000c08p-1022, 0x1.05000008p+262)});
+  const Circle<double> ball(V(0, -0x1.0504fffffffffp+262), 0x1.0505p+262);
+  const auto c = contact(spike, ball);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_LT(c->depth, 1e66);        // within the error bound of the exact 1.6 x 10^63, 8 x 64 x 2^-53 x 7.6 x 10^78
+  EXPECT_LT(c->normal.y(), -0.99);  // from the spike down toward the ball
+}
+
+/// A polygon with three faces on its left side (two of them below 10^-6 long) tied up to
+/// rounding for a circle beside them: the circle lies beside the long one, 2.4 x 10^26 away
+/// with a radius of 2.8 x 10^26, beyond the ends of the short face the tie picked first, whose
+/// neighbours alone would put the closest point at the origin and the pair apart.
+TEST(ManifoldRegression, CircleBesideARunOfTinyFacesFindsTheFaceBeyondThem) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> p = *ConvexPolygon<float>::make(
+      std::vector<V>{V(-0x1.fp-144f, 0x1.f8p-144f), V(0, -0x1.c4c2d6p-22f), V(0x1.d6d6d6p+87f, -0x1.08p-143f),
+                     V(0x1.626262p-31f, 0x1.fdc2fp+86f), V(-0x1.fp-144f, 0x1.04p-143f)});
+  const Circle<float> ball(V(-0x1.8be2b4p+87f, 0x1.fdc2fp+86f), 0x1.d6d6d6p+87f);
+  ASSERT_TRUE(overlaps(p, ball));
+  const auto c = contact(p, ball);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NEAR(c->depth, 0x1.d6d6d6p+87f - 0x1.8be2b4p+87f, 1e20f);
+  EXPECT_EQ(c->normal.x(), -1.0f);
+  EXPECT_EQ(c->ids[0].kind_b, FeatureKind::Vertex);  // the circle's centre
+  // The long left face, or its top vertex: the centre is level with it, and the closest point
+  // lies 10^-9 below it, far within rounding at 10^26.
+  EXPECT_EQ(c->ids[0].index_a, 3);
 }
 
 /// A compound's ids name the child pair that produced the contact.

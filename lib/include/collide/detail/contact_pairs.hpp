@@ -421,8 +421,8 @@ std::pair<unsigned, Calc> face_of_largest_excess(const ConvexPolygon<T>& b, cons
 /// The feature of polygon b closest to a centre c beyond its face `face` of largest excess: the
 /// face when c projects inside its span (every excess is at most the distance, so c is that
 /// excess away); beyond an end, that vertex when c also projects beyond it on the neighbouring
-/// face; otherwise nothing (rounding ranked the faces within a hair of each other: the three faces
-/// around must be searched). Always inlined: returned from a call, the optional is stored a field
+/// face; otherwise nothing (rounding ranked the faces within a hair of each other: the faces must
+/// be searched). Always inlined: returned from a call, the optional is stored a field
 /// at a time and loaded back whole, and the load waits for the stores.
 template <Scalar T>
 [[gnu::always_inline]] inline std::optional<CoreFeature> feature_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c,
@@ -437,6 +437,17 @@ template <Scalar T>
   const Calc beyond = first ? (c - vk).dot(vk - other) : (c - vk).dot(other - vk);
   if (first ? beyond >= 0 : beyond <= 0) return CoreFeature{unsigned(first ? face : next), false};
   return std::nullopt;
+}
+
+/// Whether centre c projects onto the line of polygon b's face `face` beyond the face's ends by
+/// more than band. A centre within the band of the face's line may still lie far outside a
+/// polygon with a vertex sharper than the band (every excess rounds to about 0 along the
+/// vertex's bisector): inside, it would project within the span of its least deep face.
+template <Scalar T>
+bool projects_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c, unsigned face, Calc band) noexcept {
+  const Vec2c v0 = widen(b[face]), d = widen(b[next_index(face, b.size())]) - v0;
+  const Calc along = (c - v0).dot(d), len = norm_of(d);
+  return along < -band * len || along > (len + band) * len;
 }
 
 /// A circle's contact from its centre c (radius r), the closest point on_q of the other shape, at
@@ -491,7 +502,10 @@ template <Scalar T>
   };
   if (!(excess > 0)) {
     // The centre inside (certain when inside by more than the band).
-    if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
+    if (!(excess < -band)) {
+      if (projects_beyond_face(b, c, face, band)) return contact_generic(a, b, speculative);
+      if (!decide_exactly(a, b)) return speculative_or_none();
+    }
     return circle_contact_inside(c, r, normals[face], excess, face);
   }
   std::optional<CoreFeature> feature = feature_beyond_face(b, c, face);
@@ -504,8 +518,10 @@ template <Scalar T>
       std::array<Vec2c, ConvexPolygon<T>::kInline> v;
       for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
       Closest cl;
+      // The three faces around first; the others too, since faces tied with this one up to
+      // rounding (a run of tiny faces) may hide the closest face beyond them.
       closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
-                                 face + m - 1, 3);
+                                 face + m - 1, m);
       feature = cl.feature_q;
       on_q = cl.on_q;
     }
