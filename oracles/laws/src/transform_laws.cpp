@@ -354,7 +354,8 @@ Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<
       j.require(world == moved, "the world answer, unchanged by an exact placement", yes(moved));
       const Vec2<T> p(T(0.25), T(-0.5));
       const Vec2c pw = x.apply(widen(p));
-      if (double(T(pw.x())) == pw.x() && double(T(pw.y())) == pw.y())
+      // The point's image must be exact too (in T), not only the shapes'.
+      if (exact_image<T>(Shape<T>(Circle<T>(p, T(0))), x))
         j.require(contains(a, p) == contains(a, x, pw.template cast<T>()), "contains unchanged by an exact placement",
                   "a difference");
     } else if (world != moved) {
