@@ -6,9 +6,11 @@
 
 #include <collide/broadphase.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -199,6 +201,89 @@ TYPED_TEST(Transforms, PolygonImageTestsItsTurnsWhenRoundingMayFlattenThem) {
   }
   EXPECT_GT(proven, 100) << "the margin should spare most images their turn tests";
   EXPECT_GT(flattened, 0) << "some pose should flatten the needle, or this test checks nothing";
+}
+
+/// The stored edge of `poly` (placed by translation p) nearest the point v, its images computed in
+/// double as with_image() maps them.
+std::size_t nearest_stored_edge(const ConvexPolygon<float>& poly, const Vec2<float>& p, const Vec2c& v) {
+  std::size_t best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Vec2c a = widen(poly[k]) + widen(p), b = widen(poly[(k + 1) % poly.size()]) + widen(p);
+    const Vec2c d = b - a;
+    const double t = std::clamp((v - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    const double dist = (v - (a + d * t)).norm();
+    if (dist < best_d) {
+      best_d = dist;
+      best = k;
+    }
+  }
+  return best;
+}
+
+/// A float polygon at 6.5 x 10^35 translated by 8.7 x 10^32: the translation rounds three vertices
+/// of its top face onto one line, so its image is the hull of the rounded vertices, numbered its
+/// own way. A circle touches the left face (stored edge 5). The point must name that edge, placed
+/// directly, as a compound's child with that translation, and as a placed compound's child; the
+/// hull's own number for that face names the top face, 5 x 10^35 away.
+TEST(TransformRegression, RehulledPolygonImageNamesTheStoredPolygonsFeatures) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> poly =
+      *ConvexPolygon<float>::make({V(-0x1.f5f672p+118f, -0x1.f46df6p+118f), V(-0x1.14f8dp+40f, -0x1.f5f7f6p+118f),
+                                   V(0x1.78761p+53f, -0x1.f9f78ap+39f), V(0x1.ac8acp+47f, 0x1.ab417ap+47f),
+                                   V(-0x1.e463f4p+116f, 0x1.ab3ac2p+47f), V(-0x1.f5f5f4p+118f, 0x1.a3be8cp+45f)});
+  const V p(0x1.606064p-31f, 0x1.562642p+109f);
+  const Transform<float> x = *Transform<float>::make_translation(p);
+  const Circle<float> ball = *Circle<float>::make(V(-0x1.f598p+118f, 0x1.51555p-128f), 0x1.0cp-134f);
+  const Compound<float> child = *Compound<float>::make_placed({{Primitive<float>(poly), x}});
+  const Compound<float> body({Primitive<float>(poly)});
+  const std::array<std::optional<Contact<float>>, 3> contacts = {
+      contact(poly, x, ball, Transform<float>()), contact(child, ball), contact(body, x, ball, Transform<float>())};
+  for (std::size_t way = 0; way < contacts.size(); ++way) {
+    const auto& c = contacts[way];
+    ASSERT_TRUE(c.has_value()) << "way " << way;
+    for (int i = 0; i < c->count; ++i) {
+      const FeatureId& id = c->ids[std::size_t(i)];
+      const Vec2c surface =
+          widen(c->points[std::size_t(i)]) - widen(c->normal) * (double(c->separations[std::size_t(i)]) / 2);
+      ASSERT_EQ(id.kind_a, FeatureKind::Edge) << "way " << way;
+      EXPECT_EQ(id.index_a, nearest_stored_edge(poly, p, surface)) << "way " << way << ", point " << i;
+    }
+  }
+}
+
+/// A float triangle 10^-5 high translated to y = 2^40, where the float translation's image rounds
+/// its apex onto its base: the image is the segment between the base's ends. A circle beyond the
+/// left end touches it, and the point must name that end's stored vertex (2), not the segment's
+/// first end (0).
+TEST(TransformRegression, FlattenedPolygonImageNamesTheStoredVertexAtItsEnd) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> tri = *ConvexPolygon<float>::make({V(1024, 0), V(512, 1e-5f), V(0, 0)});
+  ASSERT_EQ(tri[2], V(0, 0));
+  const Transform<float> x = *Transform<float>::make_translation(V(0, 0x1p40f));
+  const auto c = contact(tri, x, *Circle<float>::make(V(-50, 0x1p40f), 100), Transform<float>());
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 1);
+  EXPECT_EQ(c->ids[0].kind_a, FeatureKind::Vertex);
+  EXPECT_EQ(c->ids[0].index_a, 2);
+}
+
+/// A polygon with vertices at 2^500 (the largest magnitude) placed by a translation of 2^449 and a
+/// tiny rotation: its bottom face's three vertices round onto one line, and one image vertex lies
+/// at 2^500 + 2^449, beyond the magnitude the factories accept. The image is the hull of the
+/// rounded vertices all the same (not the segment along its diagonal, 2^500 / sqrt(2) from the
+/// origin): the distance to a point at the origin is that of the bottom face's middle vertex, 2^449.
+TEST(TransformRegression, PolygonImageBeyondTheLargestMagnitudeIsStillItsHull) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> poly =
+      *ConvexPolygon<double>::make({V(-0x1.6a6a63affb001p-405, 0x1.6a6a6a6a6a6a6p+11), V(0, 0),
+                                    V(0x1p+500, -0x1.ffffffffffffep-1), V(0x1.1799a9ae4b004p-80, 0x1p+500)});
+  const V p(0, 0x1.0000081p+449);
+  const Transform<double> x = *Transform<double>::make_with_rotation(p, V(1, 0x1.ba3df57c0943p-319));
+  const Circle<double> dot = *Circle<double>::make(V(0x0.0008e8e8e8ep-1022, 0), 0);
+  const Compound<double> child = *Compound<double>::make_placed({{Primitive<double>(poly), x}});
+  for (const double d : {distance(poly, x, dot, Transform<double>()), distance(child, dot)})
+    EXPECT_NEAR(d, p.y(), 1e-6 * p.y());
 }
 
 // A circle against a polygon turned by a general rotation is computed in the polygon's frame

@@ -17,6 +17,9 @@
 ///   c - ex - ey to c + ex + ey. (A box thinner than the rounding of its corners is numbered along
 ///   the convex hull of its computed corners.)
 /// - Polygon: vertex i is vertices()[i]; edge i runs from vertex i to vertex i + 1 (mod size()).
+///   A placed polygon keeps this numbering when rounding makes its image not strictly convex (the
+///   image is then the hull of its rounded vertices): an edge of that hull merged from several
+///   faces is named by the face its point lies nearest.
 /// - Compound: the child's index in children() is child_a / child_b, the rest numbers the child.
 ///
 /// A point of a face contact carries the reference face (an edge) on the shape that owns it and

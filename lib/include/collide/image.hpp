@@ -7,6 +7,7 @@
 /// allocate for the shapes whose factories do not.
 
 #include "collide/config.hpp"
+#include "collide/feature.hpp"
 #include "collide/predicates.hpp"
 #include "collide/shapes.hpp"
 #include "collide/transform.hpp"
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -142,29 +144,54 @@ decltype(auto) with_image(const Aabb<T>& s, const Pose& x, F&& f) {
   return f(ShapeAccess::obb<Calc>(image_point(x, c), h, x.q));
 }
 /// The image of a polygon that rounding made not strictly convex: the hull of its rounded
-/// vertices, or nothing when they are all on one line (kept out of line: a rare path).
+/// vertices, or nothing when they are all on one line (kept out of line: a rare path). Not
+/// validated, as every image: a vertex may lie beyond max_magnitude() by the placement.
 [[gnu::noinline]] inline std::optional<ConvexPolygon<Calc>> rounded_hull(const ConvexPolygon<Calc>& img) {
-  Expected<ConvexPolygon<Calc>> hull = ConvexPolygon<Calc>::make_hull(img.vertices());
-  if (!hull) return std::nullopt;
-  return std::move(hull).value();
+  std::size_t distinct = 0;
+  const HullPoints<Calc> h = hull_points(img.vertices(), distinct);
+  if (h.size() < 3) return std::nullopt;
+  return ShapeAccess::polygon<Calc>(h.size(), [&](std::size_t k) { return h[k]; });
+}
+
+/// The vertices of s mapped by x, in s's order (no normals cached).
+template <Scalar T>
+ConvexPolygon<Calc> mapped_polygon(const ConvexPolygon<T>& s, const Pose& x) {
+  return ShapeAccess::polygon<Calc>(s.size(), [&](std::size_t k) { return image_point(x, widen(s[k])); });
+}
+
+/// Whether s's turn margin alone shows that its vertices mapped by x still turn strictly left:
+/// every mapped vertex lies within image_tolerance() of its exact image under x's own values
+/// (composed or not), whose turns are all strictly left, so a margin beyond that tolerance keeps
+/// the mapped turns left without testing them.
+template <Scalar T>
+bool turns_survive_rounding(const ConvexPolygon<T>& s, const Pose& x) noexcept {
+  return PolygonAccess::turn_margin(s) > image_tolerance(x, PolygonAccess::largest_coordinate(s));
+}
+
+/// Whether img = mapped_polygon(s, x) still turns strictly left at every vertex (with_image()
+/// then uses it as is).
+template <Scalar T>
+bool mapped_is_strict(const ConvexPolygon<T>& s, const Pose& x, const ConvexPolygon<Calc>& img) noexcept {
+  if (turns_survive_rounding(s, x)) return true;
+  const std::size_t n = img.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (!(orient(img[k], img[next_index(k, n)], img[next_index(next_index(k, n), n)]) > 0)) return false;
+  return true;
+}
+
+/// The segment a polygon flattened by rounding is imaged as: its extreme mapped vertices in
+/// lexicographic order.
+inline Capsule<Calc> flattened_segment(const ConvexPolygon<Calc>& img) noexcept {
+  const auto less = [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
+  const auto [lo, hi] = std::minmax_element(img.vertices().begin(), img.vertices().end(), less);
+  return ShapeAccess::capsule<Calc>(*lo, *hi, 0.0);
 }
 
 /// Vertices mapped; see above for the polygon that rounding made not strictly convex.
 template <Scalar T, class F>
 decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
-  const std::size_t n = s.size();
-  const Calc local = PolygonAccess::largest_coordinate(s);
-  ConvexPolygon<Calc> img = ShapeAccess::polygon<Calc>(n, [&](std::size_t k) { return image_point(x, widen(s[k])); });
-  // Every mapped vertex lies within image_tolerance() of its exact image under x's own values
-  // (composed or not), whose turns are all strictly left: a turn margin beyond that tolerance
-  // keeps the mapped turns left without testing them.
-  bool strict = PolygonAccess::turn_margin(s) > image_tolerance(x, local);
-  if (!strict) {
-    strict = true;
-    for (std::size_t k = 0; k < n && strict; ++k)
-      strict = orient(img[k], img[next_index(k, n)], img[next_index(next_index(k, n), n)]) > 0;
-  }
-  if (strict) {
+  ConvexPolygon<Calc> img = mapped_polygon(s, x);
+  if (mapped_is_strict(s, x, img)) {
     // The stored shape's normals turned: the exact image's edges turn by q / |q|, and this costs
     // one square root for the polygon instead of one per edge.
     if (const Vec2c* normals = PolygonAccess::normals(s)) {
@@ -178,10 +205,81 @@ decltype(auto) with_image(const ConvexPolygon<T>& s, const Pose& x, F&& f) {
     return f(img);
   }
   if (const std::optional<ConvexPolygon<Calc>> hull = rounded_hull(img)) return f(*hull);
-  // Flattened to a segment (or a point): its extreme points in lexicographic order.
-  const auto less = [](const Vec2c& a, const Vec2c& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); };
-  const auto [lo, hi] = std::minmax_element(img.vertices().begin(), img.vertices().end(), less);
-  return f(ShapeAccess::capsule<Calc>(*lo, *hi, 0.0));
+  return f(flattened_segment(img));
+}
+
+/// The index of the first mapped vertex at v (a vertex of the hull or segment made of img).
+inline std::size_t mapped_index(const ConvexPolygon<Calc>& img, const Vec2c& v) noexcept {
+  std::size_t k = 0;
+  while (k + 1 < img.size() && img[k] != v) ++k;
+  return k;
+}
+
+/// Of the mapped edges first, first + 1, ..., first + count - 1 (mod n), the one nearest p; of
+/// edges equally near (a polygon flattened onto one line), the one facing most along `toward`.
+/// Coordinates are scaled by a power of two first, so that squares neither overflow nor vanish.
+inline std::size_t nearest_mapped_edge(const ConvexPolygon<Calc>& img, const Vec2c& p, const Vec2c& toward,
+                                       std::size_t first, std::size_t count) noexcept {
+  const std::size_t n = img.size();
+  const Calc big = std::max(PolygonAccess::largest_coordinate(img), p.cwiseAbs().maxCoeff());
+  const Calc unit = big > 0 && std::isfinite(big) ? std::ldexp(1.0, -std::ilogb(big)) : 1.0;
+  const Vec2c v = p * unit;
+  std::size_t best = first % n;
+  Calc best_d2 = std::numeric_limits<Calc>::infinity(), best_facing = 0;
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::size_t i = (first + j) % n;
+    const Vec2c a = img[i] * unit, d = img[next_index(i, n)] * unit - a;
+    const Calc dd = d.squaredNorm();
+    const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
+    const Calc d2 = squared_distance_to_segment(v, a, d, dd, t);
+    const Calc facing = (d.y() * toward.x() - d.x() * toward.y()) / std::sqrt(dd);  // outward normal . toward
+    if (d2 < best_d2 || (d2 == best_d2 && facing > best_facing)) {
+      best_d2 = d2;
+      best_facing = facing;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// Renames the features of one side of c (side_b: b's, else a's), a contact computed on
+/// with_image(s, x)'s image, as s's own (feature.hpp numbers a polygon by its stored vertices). Only
+/// the hull or segment that replaces an image rounding made not strictly convex numbers them its
+/// own way: a vertex of it becomes the stored vertex mapped there, an edge the stored edge nearest
+/// that side's surface point among those it covers (several when rounding merged them).
+template <Scalar T, class C>
+void name_stored_features(const ConvexPolygon<T>& s, const Pose& x, C& c, bool side_b) {
+  if (turns_survive_rounding(s, x)) [[likely]]
+    return;
+  const ConvexPolygon<Calc> img = mapped_polygon(s, x);
+  if (mapped_is_strict(s, x, img)) return;
+  const std::size_t n = img.size();
+  const std::optional<ConvexPolygon<Calc>> hull = rounded_hull(img);
+  for (int i = 0; i < c.count; ++i) {
+    FeatureId& id = c.ids[std::size_t(i)];
+    std::uint8_t& index = side_b ? id.index_b : id.index_a;
+    const FeatureKind kind = side_b ? id.kind_b : id.kind_a;
+    // The side's surface point: the contact point is midway between the surfaces.
+    const Vec2c mid = widen(c.points[std::size_t(i)]), normal = widen(c.normal);
+    const Vec2c surface = mid + normal * (Calc(c.separations[std::size_t(i)]) / (side_b ? 2 : -2));
+    const Vec2c facing = side_b ? Vec2c(-normal) : normal;  // the way this side's surface faces
+    std::size_t stored = 0;
+    if (hull) {
+      const std::size_t m = hull->size();
+      const std::size_t from = mapped_index(img, (*hull)[index % m]);
+      if (kind == FeatureKind::Vertex) {
+        stored = from;
+      } else {
+        const std::size_t to = mapped_index(img, (*hull)[next_index(index % m, m)]);
+        stored = nearest_mapped_edge(img, surface, facing, from, to > from ? to - from : to + n - from);
+      }
+    } else {
+      const Capsule<Calc> segment = flattened_segment(img);
+      stored = kind == FeatureKind::Vertex ? mapped_index(img, index == 0 ? segment.a() : segment.b())
+                                           : nearest_mapped_edge(img, surface, facing, 0, n);
+    }
+    index = static_cast<std::uint8_t>(stored);
+  }
 }
 
 }  // namespace collide::detail

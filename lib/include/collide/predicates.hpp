@@ -296,6 +296,18 @@ inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noex
   return orient_expansion(s(a), s(b), s(c));
 }
 
+/// The squared distance from v to the segment from a to a + d, given dd = |d|^2 > 0 (or 0 with t = 0)
+/// and t, the parameter of v's foot clamped to [0, 1]. Beside the segment it is taken from the
+/// cross product: the foot a + d t rounds by up to an ulp of a, enough to make an end look closer
+/// than the segment it lies beyond.
+inline Calc squared_distance_to_segment(const Vec2c& v, const Vec2c& a, const Vec2c& d, Calc dd, Calc t) noexcept {
+  if (t > 0 && t < 1) {
+    const Calc cross = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x());
+    return cross * (cross / dd);
+  }
+  return (v - (a + d * t)).squaredNorm();
+}
+
 }  // namespace detail
 
 /// Sign of the turn a -> b -> c: +1 counter-clockwise (c left of a->b), -1 clockwise, 0 collinear.

@@ -242,6 +242,10 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
       });
       ++ia;
     });
+    if (best) {
+      name_child_features(a, *best, false);
+      name_child_features(b, *best, true);
+    }
     return best;
   } else {
     return contact_primitives(a, b, speculative);

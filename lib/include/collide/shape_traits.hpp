@@ -108,13 +108,43 @@ struct IsCompound<PlacedCompound<T>> : std::true_type {};
 template <class S>
 inline constexpr bool is_compound_v = IsCompound<std::remove_cvref_t<S>>::value;
 
+/// The placement of child i of c under `body`: composed with the child's own transform, if any.
+template <Scalar T>
+Pose child_pose(const Compound<T>& c, std::size_t i, const Pose& body) {
+  return c.has_child_transforms() ? compose(body, c.child_transform(i).pose()) : body;
+}
+
 /// Calls f with the image of child i of c under `body` composed with the child's own transform
 /// (always an image in double, even of the identity: one set of placed types).
 template <Scalar T, class F>
 void visit_child(const Compound<T>& c, std::size_t i, const Pose& body, F&& f) {
-  const Pose x = c.has_child_transforms() ? compose(body, c.child_transform(i).pose()) : body;
+  const Pose x = child_pose(c, i, body);
   std::visit([&](const auto& p) { with_image(p, x, f); }, c.children()[i]);
 }
+
+/// name_stored_features() (image.hpp) for the child of compound c that one side of `contact`
+/// names, when it is a polygon imaged under `body` composed with its own transform: a contact's
+/// points all come from one child pair.
+template <Scalar T, class C>
+void name_child_features(const Compound<T>& c, const Pose& body, C& contact, bool side_b) {
+  const std::size_t i = side_b ? contact.ids[0].child_b : contact.ids[0].child_a;
+  if (const auto* poly = std::get_if<ConvexPolygon<T>>(&c.children()[i]))
+    name_stored_features(*poly, child_pose(c, i, body), contact, side_b);
+}
+/// As above for a shape met in contact_concrete(): a compound visited through its children's
+/// images (placed, or with child transforms). Nothing for the others.
+template <Scalar T, class C>
+void name_child_features(const PlacedCompound<T>& s, C& contact, bool side_b) {
+  name_child_features(*s.compound, s.pose, contact, side_b);
+}
+/// @copydoc name_child_features(const PlacedCompound<T>&, C&, bool)
+template <Scalar T, class C>
+void name_child_features(const Compound<T>& s, C& contact, bool side_b) {
+  if (s.has_child_transforms()) name_child_features(s, Pose{}, contact, side_b);
+}
+/// @copydoc name_child_features(const PlacedCompound<T>&, C&, bool)
+template <class S, class C>
+void name_child_features(const S&, C&, bool) noexcept {}
 
 /// Calls f with each primitive of s (s itself, or each child of a compound, placed: a compound
 /// with child transforms is visited through its children's images).

@@ -387,6 +387,41 @@ class Capsule {
   T radius_;
 };
 
+namespace detail {
+/// Points on a convex hull, inline for the hulls of up to 16 points.
+template <Scalar T>
+using HullPoints = SmallList<Vec2<T>, 32>;
+
+/// The convex hull of finite points, counter-clockwise from the lexicographically smallest
+/// (monotone chain on the exact orient(); points on the hull's edges dropped); fewer than 3
+/// points when they are all on one line. `distinct` gets the number of distinct points.
+template <Scalar T>
+HullPoints<T> hull_points(std::span<const Vec2<T>> points, std::size_t& distinct) {
+  SmallList<Vec2<T>, 16> p;
+  for (const Vec2<T>& q : points) p.push_back(q);
+  std::sort(p.begin(), p.end(),
+            [](const Vec2<T>& a, const Vec2<T>& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.resize_down(std::size_t(std::unique(p.begin(), p.end()) - p.begin()));
+  distinct = p.size();
+  HullPoints<T> h;
+  if (p.size() < 3) return h;
+  for (std::size_t i = 0; i < 2 * p.size(); ++i) h.push_back(Vec2<T>::Zero());
+  std::size_t k = 0;
+  auto turn = [&](std::size_t i, const Vec2<T>& c) { return orient(widen(h[i - 2]), widen(h[i - 1]), widen(c)); };
+  for (const Vec2<T>& q : p) {
+    while (k >= 2 && turn(k, q) <= 0) --k;
+    h[k++] = q;
+  }
+  const std::size_t lower = k + 1;
+  for (std::size_t i = p.size() - 1; i-- > 0;) {
+    while (k >= lower && turn(k, p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize_down(k - 1);
+  return h;
+}
+}  // namespace detail
+
 /// Convex polygon with vertices stored counter-clockwise, no two consecutive equal, no three
 /// consecutive collinear. Up to kInline vertices are stored without a heap allocation.
 template <Scalar T>
@@ -486,26 +521,9 @@ class ConvexPolygon {
       if (!detail::check_value(points[i].x(), long(2 * i), &e)) return e;
       if (!detail::check_value(points[i].y(), long(2 * i + 1), &e)) return e;
     }
-    detail::SmallList<Vec2<T>, 2 * kInline> p;
-    for (const Vec2<T>& q : points) p.push_back(q);
-    std::sort(p.begin(), p.end(),
-              [](const Vec2<T>& a, const Vec2<T>& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-    p.resize_down(std::size_t(std::unique(p.begin(), p.end()) - p.begin()));
-    if (p.size() < 3) return ShapeError(Error::TooFewVertices, -1, "fewer than 3 distinct points");
-    detail::SmallList<Vec2<T>, 4 * kInline> h;
-    for (std::size_t i = 0; i < 2 * p.size(); ++i) h.push_back(Vec2<T>::Zero());
-    std::size_t k = 0;
-    auto turn = [&](std::size_t i, const Vec2<T>& c) { return orient(widen(h[i - 2]), widen(h[i - 1]), widen(c)); };
-    for (const Vec2<T>& q : p) {
-      while (k >= 2 && turn(k, q) <= 0) --k;
-      h[k++] = q;
-    }
-    const std::size_t lower = k + 1;
-    for (std::size_t i = p.size() - 1; i-- > 0;) {
-      while (k >= lower && turn(k, p[i]) <= 0) --k;
-      h[k++] = p[i];
-    }
-    h.resize_down(k - 1);
+    std::size_t distinct = 0;
+    const detail::HullPoints<T> h = detail::hull_points(points, distinct);
+    if (distinct < 3) return ShapeError(Error::TooFewVertices, -1, "fewer than 3 distinct points");
     if (h.size() < 3) return ShapeError(Error::Collinear, -1, "points are all collinear");
     return make(h.span());
   }

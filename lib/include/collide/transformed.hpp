@@ -84,6 +84,13 @@ decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
   }
 }
 
+/// name_stored_features() for a concrete shape placed by x: only a polygon's image may number its
+/// features its own way (a compound's children are renamed where their contact is found).
+template <class S, Scalar T, class C>
+void name_placed_features(const S& s, const Transform<T>& x, C& c, bool side_b) {
+  if constexpr (std::is_same_v<S, ConvexPolygon<T>>) name_stored_features(s, x.pose(), c, side_b);
+}
+
 /// The box of s's computed image under x, before any padding (a compound's: its placed box).
 template <class S, Scalar T>
 Aabb<Calc> placed_box(const S& s, const Transform<T>& x) {
@@ -184,8 +191,13 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
       if (local.contact) detail::round_into(*local.contact, out);
       return out;
     }
-    return detail::with_placed_both(
+    out = detail::with_placed_both(
         ca, xa, cb, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
+    if (out) {
+      detail::name_placed_features(ca, xa, *out, false);
+      detail::name_placed_features(cb, xb, *out, true);
+    }
+    return out;
   });
 }
 

@@ -347,9 +347,10 @@ template <Scalar T>
   // The closest points as closest_points() finds them: the centre against the segment, then
   // each end against the centre when strictly closer.
   const Vec2c d = s1 - s0;
-  const Calc t = std::clamp((c - s0).dot(d) / d.squaredNorm(), Calc(0), Calc(1));
+  const Calc dd = d.squaredNorm();
+  const Calc t = std::clamp((c - s0).dot(d) / dd, Calc(0), Calc(1));
   Vec2c on_q = s0 + d * t;
-  Calc dist2 = (c - on_q).squaredNorm();
+  Calc dist2 = squared_distance_to_segment(c, s0, d, dd, t);
   CoreFeature feature{t >= 1 ? 1u : 0u, t > 0 && t < 1};
   if (feature.edge) feature.index = d.x() * (c.y() - s0.y()) - d.y() * (c.x() - s0.x()) < 0 ? 0u : 1u;
   for (const unsigned k : {0u, 1u}) {
@@ -371,13 +372,15 @@ template <Scalar T>
   // the direction between the points.
   const Vec2c dq = on_q - c;
   Vec2c n = Vec2c::Zero();
-  if (feature.edge && !(d.squaredNorm() < dq.squaredNorm())) {
+  if (feature.edge && !(dd < dq.squaredNorm())) {
     n = unit_of(Vec2c(d.y(), -d.x()));
     if (n.dot(dq) < 0) n = -n;
   }
   const bool side = n != Vec2c::Zero();
-  if (!side) n = direction_of(dq, dist);  // |dq| is dist: the same square root
-  const Calc along = side ? dq.dot(n) : dist;
+  // |dq| is dist (the same square root), except beside the segment: dist is from its line there.
+  const Calc reach = side || !feature.edge ? dist : norm_of(dq);
+  if (!side) n = direction_of(dq, reach);
+  const Calc along = side ? dq.dot(n) : reach;
   if (!(along > band_of(points))) return contact_generic(a, b, speculative);
   CoreContact out;
   out.normal = n;

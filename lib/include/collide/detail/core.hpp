@@ -305,7 +305,7 @@ inline void closest_of_points_to_edges(Closest& best, std::span<const Vec2c> pts
       const Vec2c d = edges[i + 1 < n ? i + 1 : 0] - a;
       const Calc dd = d.squaredNorm();
       const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
-      const Calc d2 = (v - (a + d * t)).squaredNorm();
+      const Calc d2 = squared_distance_to_segment(v, a, d, dd, t);
       if (!(d2 < best_d2)) continue;
       best_d2 = d2;
       best_t = t;
