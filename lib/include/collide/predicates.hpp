@@ -301,11 +301,10 @@ inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noex
 /// cross product: the foot a + d t rounds by up to an ulp of a, enough to make an end look closer
 /// than the segment it lies beyond.
 inline Calc squared_distance_to_segment(const Vec2c& v, const Vec2c& a, const Vec2c& d, Calc dd, Calc t) noexcept {
-  if (t > 0 && t < 1) {
-    const Calc cross = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x());
-    return cross * (cross / dd);
-  }
-  return (v - (a + d * t)).squaredNorm();
+  // Both computed and one chosen: a select, where a branch on t mispredicts.
+  const Calc cross = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x());
+  const Calc beside = cross * (cross / dd), from_foot = (v - (a + d * t)).squaredNorm();
+  return t > 0 && t < 1 ? beside : from_foot;
 }
 
 }  // namespace detail

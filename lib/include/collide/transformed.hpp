@@ -84,11 +84,19 @@ decltype(auto) with_placed(const S& s, const Transform<T>& x, F&& f) {
   }
 }
 
-/// name_stored_features() for a concrete shape placed by x: only a polygon's image may number its
-/// features its own way (a compound's children are renamed where their contact is found).
-template <class S, Scalar T, class C>
-void name_placed_features(const S& s, const Transform<T>& x, C& c, bool side_b) {
-  if constexpr (std::is_same_v<S, ConvexPolygon<T>>) name_stored_features(s, x.pose(), c, side_b);
+/// name_stored_features() for a concrete shape s placed by x as `image`: only a polygon imaged as a
+/// hull (fewer vertices: a vertex whose mapped turn is not left is not one of the hull's) or as a
+/// segment numbers its features its own way. A compound's children are renamed where their contact
+/// is found.
+template <class S, class Image, Scalar T, class C>
+void name_placed_features(const S& s, const Image& image, const Transform<T>& x, C& c, bool side_b) {
+  if constexpr (std::is_same_v<S, ConvexPolygon<T>>) {
+    if constexpr (std::is_same_v<Image, ConvexPolygon<Calc>>) {
+      if (image.size() == s.size()) [[likely]]
+        return;
+    }
+    name_stored_features(s, x.pose(), c, side_b);
+  }
 }
 
 /// The box of s's computed image under x, before any padding (a compound's: its placed box).
@@ -191,12 +199,16 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
       if (local.contact) detail::round_into(*local.contact, out);
       return out;
     }
-    out = detail::with_placed_both(
-        ca, xa, cb, xb, [&](const auto& pa, const auto& pb) { return detail::contact_as<T>(pa, pb, extra...); });
-    if (out) {
-      detail::name_placed_features(ca, xa, *out, false);
-      detail::name_placed_features(cb, xb, *out, true);
-    }
+    const std::optional<detail::CoreContact> c =
+        detail::with_placed_both(ca, xa, cb, xb, [&](const auto& pa, const auto& pb) {
+          std::optional<detail::CoreContact> found = detail::contact_concrete(pa, pb, speculative);
+          if (found) {
+            detail::name_placed_features(ca, pa, xa, *found, false);
+            detail::name_placed_features(cb, pb, xb, *found, true);
+          }
+          return found;
+        });
+    if (c) detail::round_into(*c, out);
     return out;
   });
 }
