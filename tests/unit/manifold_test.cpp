@@ -540,6 +540,39 @@ TEST(ManifoldRegression, CircleBesideASegmentNearItsEndTakesTheSegmentsNormal) {
   }
 }
 
+/// A polygon whose edges 1 and 2 are parallel to within 10^-16 (a corner at a subnormal vertex),
+/// touched by a segment beyond edge 1's end, at edge 2, 3 x 10^-11 past the corner. The faces tie
+/// for the least depth and edge 1, the first, is the reference face; clipping keeps nothing of the
+/// segment, and the witness point, on edge 2, was named by edge 1, 3 x 10^-11 away. The point must
+/// name a feature it lies on: a's edge 2, or the corner (a vertex spans its two edges).
+TEST(ManifoldRegression, WitnessBeyondTheReferenceFaceNamesTheFacesEnd) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> a = *ConvexPolygon<double>::make(
+      {V(-0x1.b1b03396c351ap-14, -0x1.c3206bfb5f617p-16), V(0x1.7e217c9e6p-30, -0x1.c3206bfb5f617p-16),
+       V(0x0.000000035p-1022, 0x0.00023272dp-1022), V(-0x1.b1b03396c351ap-14, 0x1.fffe3cdfa8d96p+0)});
+  const Transform<double> xa = *Transform<double>::make_with_rotation(
+      V(-0x1.e8e254031588ep-791, -0x1.e8e8e8e8e8e8fp-791), V(1, 0x1.11b08ce6de5cp-446));
+  const Capsule<double> b =
+      *Capsule<double>::make(V(0x1.ffffa71e33cfep-32, 0x1.0aac619bea75ep-35),
+                             V(-0x1.c3c730c06206p-50, 0x1.0aac619bea75ep-35), 0x1.0001062008e8ep-1007);
+  const Transform<double> xb = *Transform<double>::make_translation(V(0x0.000000035p-1022, 0x0.0000023272dp-1022));
+  const auto c = contact(a, xa, b, xb);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 1);
+  const FeatureId& id = c->ids[0];
+  const Vec2c surface = widen(c->points[0]) - widen(c->normal) * (c->separations[0] / 2);
+  const std::size_t n = a.size();
+  const auto edge_distance = [&](std::size_t e) {
+    const Vec2c p = widen(a[e]), d = widen(a[(e + 1) % n]) - p;
+    const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (surface - (p + d * t)).norm();
+  };
+  const double reach = id.kind_a == FeatureKind::Edge
+                           ? edge_distance(id.index_a)
+                           : std::min(edge_distance(id.index_a), edge_distance((id.index_a + n - 1) % n));
+  EXPECT_LT(reach, 1e-15) << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
+}
+
 /// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
 /// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
 /// between child pairs is measured at their deepest points, which the added point is not).

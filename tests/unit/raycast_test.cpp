@@ -180,5 +180,22 @@ TYPED_TEST(Raycast, FarHugeAndTinyInputsStayFinite) {
   EXPECT_FALSE(raycast(Circle<T>(Vec2<T>(0, 0), 1), ray<T>(-2, 0, tiny, 0), big).has_value());
 }
 
+/// A float ray along a 5.9 x 10^34 direction meeting a circle 4.8 x 10^-9 away: the hit's t,
+/// 58.88 denorm_min, is subnormal in float. Rounded to nearest it became 59 denorm_min, 9.6 x 10^-12
+/// past the entry along the ray, and the ray point at t lay that deep inside the circle, beyond
+/// raycast_tolerance(). The contract says no ray point before t is deeper than that: the point at
+/// t itself (computed in double) must be no deeper either.
+TEST(RaycastRegression, SubnormalHitTimeStopsShortOfTheSurface) {
+  using V = Vec2<float>;
+  const Circle<float> c = *Circle<float>::make(V(0x1.6d04a8p-21f, -0x1.812a9ep-74f), 0x1.6a6a6ap-21f);
+  const Ray<float> r{V(0x1.a9a8p-136f, 0x1.6a6a62p-63f), V(0x1.6a11d8p+115f, 0x1.cb08p-134f)};
+  const auto h = raycast(c, r, 0x1.fep-142f);
+  ASSERT_TRUE(h.has_value());
+  ASSERT_GT(h->t, 0.0f);
+  const Vec2c at = widen(r.origin) + widen(r.direction) * double(h->t);
+  const double depth = double(c.radius()) - (at - widen(c.center())).norm();
+  EXPECT_LE(depth, raycast_tolerance(c, r)) << "the ray point at t lies inside the circle";
+}
+
 }  // namespace
 }  // namespace collide::test

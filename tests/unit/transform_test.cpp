@@ -252,6 +252,43 @@ TEST(TransformRegression, RehulledPolygonImageNamesTheStoredPolygonsFeatures) {
   }
 }
 
+/// A float polygon at 6.5 x 10^35 turned and translated so that two of its vertices round 10^28
+/// apart and the hull of the rounded vertices drops one of them. Against a polygon whose face is
+/// the reference face, the hull's incident edge is clipped back to near the origin, and that point
+/// keeps the id of the dropped vertex's neighbour on the hull. It must name a stored vertex whose
+/// edges pass through the point (a vertex feature spans its two edges), not the hull vertex's own
+/// stored vertex, 6.5 x 10^35 away.
+TEST(TransformRegression, RehulledPolygonImageNamesAClippedVertexByItsEdges) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> a = *ConvexPolygon<float>::make(
+      {V(-0x1.f5f5f6p+118f, -0x1.1dc3aep+39f), V(-0x1.f5f5f4p+118f, -0x1.f5f5f6p+118f),
+       V(0x1.c13874p+39f, -0x1.f5f5f4p+118f), V(0x1.aeaeaep+99f, -0x1.1dc3aep+39f), V(-0x1.f5f5f4p+118f, 0)});
+  const Transform<float> xa =
+      *Transform<float>::make_with_rotation(V(0x1.c13874p+39f, -0x1.1dc3aep+39f), V(0x1.afffe8p-1f, -0x1.12cf42p-1f));
+  const ConvexPolygon<float> b =
+      *ConvexPolygon<float>::make({V(-0x1.f5f5cp+117f, 0x1.f5f628p+117f), V(0x1.b2606p-31f, 0x1.545412p-43f),
+                                   V(0x1.f5f628p+117f, -0x1.f5f5cp+117f), V(0x1.f5f694p+117f, 0x1.f5f628p+117f)});
+  const Transform<float> xb = *Transform<float>::make_translation(V(0x1.add454p-43f, 0x1.545454p-43f));
+  const auto c = contact(a, xa, b, xb);
+  ASSERT_TRUE(c.has_value());
+  const detail::Pose pose = xa.pose();
+  const std::size_t n = a.size();
+  for (int i = 0; i < c->count; ++i) {
+    const FeatureId& id = c->ids[std::size_t(i)];
+    if (id.kind_a != FeatureKind::Vertex) continue;
+    const Vec2c surface =
+        widen(c->points[std::size_t(i)]) - widen(c->normal) * (double(c->separations[std::size_t(i)]) / 2);
+    double reach = std::numeric_limits<double>::infinity();
+    for (const std::size_t e : {std::size_t(id.index_a), (id.index_a + n - 1) % n}) {
+      const Vec2c p = detail::image_point(pose, widen(a[e])), q = detail::image_point(pose, widen(a[(e + 1) % n]));
+      const Vec2c d = q - p;
+      const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      reach = std::min(reach, (surface - (p + d * t)).norm());
+    }
+    EXPECT_LT(reach, 1e31) << "point " << i << " names vertex " << int(id.index_a);
+  }
+}
+
 /// A float triangle 10^-5 high translated to y = 2^40, where the float translation's image rounds
 /// its apex onto its base: the image is the segment between the base's ends. A circle beyond the
 /// left end touches it, and the point must name that end's stored vertex (2), not the segment's

@@ -215,38 +215,74 @@ inline std::size_t mapped_index(const ConvexPolygon<Calc>& img, const Vec2c& v) 
   return k;
 }
 
-/// Of the mapped edges first, first + 1, ..., first + count - 1 (mod n), the one nearest p; of
-/// edges equally near (a polygon flattened onto one line), the one facing most along `toward`.
-/// Coordinates are scaled by a power of two first, so that squares neither overflow nor vanish.
-inline std::size_t nearest_mapped_edge(const ConvexPolygon<Calc>& img, const Vec2c& p, const Vec2c& toward,
-                                       std::size_t first, std::size_t count) noexcept {
-  const std::size_t n = img.size();
-  const Calc big = std::max(PolygonAccess::largest_coordinate(img), p.cwiseAbs().maxCoeff());
-  const Calc unit = big > 0 && std::isfinite(big) ? std::ldexp(1.0, -std::ilogb(big)) : 1.0;
-  const Vec2c v = p * unit;
-  std::size_t best = first % n;
-  Calc best_d2 = std::numeric_limits<Calc>::infinity(), best_facing = 0;
-  for (std::size_t j = 0; j < count; ++j) {
-    const std::size_t i = (first + j) % n;
-    const Vec2c a = img[i] * unit, d = img[next_index(i, n)] * unit - a;
+/// Distances to the mapped edges of a polygon image, with coordinates scaled by a power of two
+/// first, so that squares neither overflow nor vanish.
+struct MappedEdges {
+  const ConvexPolygon<Calc>& img;
+  Vec2c v;    ///< the point, scaled
+  Calc unit;  ///< the scale
+
+  MappedEdges(const ConvexPolygon<Calc>& image, const Vec2c& p) noexcept : img(image) {
+    const Calc big = std::max(PolygonAccess::largest_coordinate(img), p.cwiseAbs().maxCoeff());
+    unit = big > 0 && std::isfinite(big) ? std::ldexp(1.0, -std::ilogb(big)) : 1.0;
+    v = p * unit;
+  }
+  /// Edge i's start and direction, scaled.
+  std::pair<Vec2c, Vec2c> edge(std::size_t i) const noexcept {
+    const Vec2c a = img[i] * unit;
+    return {a, img[next_index(i, img.size())] * unit - a};
+  }
+  /// The squared distance from the point to edge i (scaled).
+  Calc squared_distance(std::size_t i) const noexcept {
+    const auto [a, d] = edge(i);
     const Calc dd = d.squaredNorm();
     const Calc t = dd > 0 ? std::clamp((v - a).dot(d) / dd, Calc(0), Calc(1)) : Calc(0);
-    const Calc d2 = squared_distance_to_segment(v, a, d, dd, t);
-    const Calc facing = (d.y() * toward.x() - d.x() * toward.y()) / std::sqrt(dd);  // outward normal . toward
-    if (d2 < best_d2 || (d2 == best_d2 && facing > best_facing)) {
-      best_d2 = d2;
-      best_facing = facing;
-      best = i;
-    }
+    return squared_distance_to_segment(v, a, d, dd, t);
   }
-  return best;
-}
+  /// Of the edges first, ..., first + count - 1 (mod n), the one nearest the point; of edges
+  /// equally near (a polygon flattened onto one line), the one facing most along `toward`.
+  std::size_t nearest_edge(const Vec2c& toward, std::size_t first, std::size_t count) const noexcept {
+    const std::size_t n = img.size();
+    std::size_t best = first % n;
+    Calc best_d2 = std::numeric_limits<Calc>::infinity(), best_facing = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::size_t i = (first + j) % n;
+      const Calc d2 = squared_distance(i);
+      const auto [a, d] = edge(i);
+      const Calc facing = (d.y() * toward.x() - d.x() * toward.y()) / d.norm();  // outward normal . toward
+      if (d2 < best_d2 || (d2 == best_d2 && facing > best_facing)) {
+        best_d2 = d2;
+        best_facing = facing;
+        best = i;
+      }
+    }
+    return best;
+  }
+  /// Vertex `at`, or of the vertices first, ..., first + count - 1 (mod n), one whose edges (the
+  /// two that meet there, which a vertex feature spans) lie strictly nearer the point.
+  std::size_t nearest_vertex(std::size_t at, std::size_t first, std::size_t count) const noexcept {
+    const std::size_t n = img.size();
+    const auto reach = [&](std::size_t k) { return std::min(squared_distance(k), squared_distance((k + n - 1) % n)); };
+    std::size_t best = at;
+    Calc best_d2 = reach(at);
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::size_t k = (first + j) % n;
+      if (const Calc d2 = reach(k); d2 < best_d2) {
+        best_d2 = d2;
+        best = k;
+      }
+    }
+    return best;
+  }
+};
 
 /// Renames the features of one side of c (side_b: b's, else a's), a contact computed on
 /// with_image(s, x)'s image, as s's own (feature.hpp numbers a polygon by its stored vertices). Only
 /// the hull or segment that replaces an image rounding made not strictly convex numbers them its
-/// own way: a vertex of it becomes the stored vertex mapped there, an edge the stored edge nearest
-/// that side's surface point among those it covers (several when rounding merged them).
+/// own way. An edge of it becomes the stored edge nearest that side's surface point among those it
+/// covers (several when rounding merged them). A vertex becomes the stored vertex mapped there, or
+/// one merged into it or dropped beside it whose edges lie nearer the point: an incident vertex
+/// clipped back along the hull's edge keeps its id, and its point lies on that edge.
 template <Scalar T, class C>
 void name_stored_features(const ConvexPolygon<T>& s, const Pose& x, C& c, bool side_b) {
   if (turns_survive_rounding(s, x)) [[likely]]
@@ -255,28 +291,32 @@ void name_stored_features(const ConvexPolygon<T>& s, const Pose& x, C& c, bool s
   if (mapped_is_strict(s, x, img)) return;
   const std::size_t n = img.size();
   const std::optional<ConvexPolygon<Calc>> hull = rounded_hull(img);
+  // The stored vertices from `from` up to `to` (mod n), `to` excluded.
+  const auto span = [n](std::size_t from, std::size_t to) { return to > from ? to - from : to + n - from; };
   for (int i = 0; i < c.count; ++i) {
     FeatureId& id = c.ids[std::size_t(i)];
     std::uint8_t& index = side_b ? id.index_b : id.index_a;
     const FeatureKind kind = side_b ? id.kind_b : id.kind_a;
     // The side's surface point: the contact point is midway between the surfaces.
     const Vec2c mid = widen(c.points[std::size_t(i)]), normal = widen(c.normal);
-    const Vec2c surface = mid + normal * (Calc(c.separations[std::size_t(i)]) / (side_b ? 2 : -2));
+    const MappedEdges edges(img, mid + normal * (Calc(c.separations[std::size_t(i)]) / (side_b ? 2 : -2)));
     const Vec2c facing = side_b ? Vec2c(-normal) : normal;  // the way this side's surface faces
     std::size_t stored = 0;
     if (hull) {
-      const std::size_t m = hull->size();
-      const std::size_t from = mapped_index(img, (*hull)[index % m]);
+      const std::size_t m = hull->size(), j = index % m;
+      const std::size_t at = mapped_index(img, (*hull)[j]);
+      const std::size_t after = mapped_index(img, (*hull)[next_index(j, m)]);
       if (kind == FeatureKind::Vertex) {
-        stored = from;
+        const std::size_t before = mapped_index(img, (*hull)[(j + m - 1) % m]);
+        stored = edges.nearest_vertex(at, next_index(before, n), span(before, after) - 1);
       } else {
-        const std::size_t to = mapped_index(img, (*hull)[next_index(index % m, m)]);
-        stored = nearest_mapped_edge(img, surface, facing, from, to > from ? to - from : to + n - from);
+        stored = edges.nearest_edge(facing, at, span(at, after));
       }
     } else {
       const Capsule<Calc> segment = flattened_segment(img);
-      stored = kind == FeatureKind::Vertex ? mapped_index(img, index == 0 ? segment.a() : segment.b())
-                                           : nearest_mapped_edge(img, surface, facing, 0, n);
+      stored = kind == FeatureKind::Vertex
+                   ? edges.nearest_vertex(mapped_index(img, index == 0 ? segment.a() : segment.b()), 0, n)
+                   : edges.nearest_edge(facing, 0, n);
     }
     index = static_cast<std::uint8_t>(stored);
   }

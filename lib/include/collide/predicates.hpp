@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -299,12 +300,14 @@ inline int orient_expansion(const Vec2c& a, const Vec2c& b, const Vec2c& c) noex
 /// The squared distance from v to the segment from a to a + d, given dd = |d|^2 > 0 (or 0 with t = 0)
 /// and t, the parameter of v's foot clamped to [0, 1]. Beside the segment it is taken from the
 /// cross product: the foot a + d t rounds by up to an ulp of a, enough to make an end look closer
-/// than the segment it lies beyond.
+/// than the segment it lies beyond. Not where dd or the cross product is subnormal (a segment
+/// shorter than 10^-154, say): their lost bits would cost more than the foot's rounding.
 inline Calc squared_distance_to_segment(const Vec2c& v, const Vec2c& a, const Vec2c& d, Calc dd, Calc t) noexcept {
   // Both computed and one chosen: a select, where a branch on t mispredicts.
   const Calc cross = d.x() * (v.y() - a.y()) - d.y() * (v.x() - a.x());
   const Calc beside = cross * (cross / dd), from_foot = (v - (a + d * t)).squaredNorm();
-  return t > 0 && t < 1 ? beside : from_foot;
+  const Calc normal = std::numeric_limits<Calc>::min();
+  return t > 0 && t < 1 && dd >= normal && std::fabs(cross) >= normal ? beside : from_foot;
 }
 
 }  // namespace detail

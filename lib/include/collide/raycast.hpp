@@ -14,7 +14,7 @@
 ///   S = largest absolute coordinate of bounds(shape)):
 /// - a returned point lies within delta of the shape (within delta of its boundary unless t = 0),
 ///   and |origin + t * direction - point| <= delta + (4 eps_T t + denorm_min_T) |direction| (t is
-///   rounded to T, and underflows to 0 for a hit 1e-60 along a 1e33 direction);
+///   rounded to T toward 0, and underflows to 0 for a hit 1e-60 along a 1e33 direction);
 /// - no ray point with parameter in [0, t) is deeper than delta inside the shape;
 /// - no hit means no ray point with parameter in [0, max_t] is deeper than delta inside the shape.
 /// So rays passing within delta of the shape (grazing, or ending within delta of it) may hit or
@@ -312,7 +312,11 @@ std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) 
   const Calc t = e > 0 ? std::ldexp(h->s, -e) / len_s : std::ldexp(h->s / len_s, -e);
   if (!(t <= tmax)) return std::nullopt;
   const Vec2c point = o + u * h->s;
-  return RayHit<T>{static_cast<T>(t), point.template cast<T>(), h->normal.template cast<T>()};
+  // t rounded toward 0, so that no ray point before it is deeper than the hit: rounded to nearest,
+  // a subnormal t may land a whole denorm_min * |direction| past it.
+  T rounded = static_cast<T>(t);
+  if (Calc(rounded) > t) rounded = std::nextafter(rounded, T(0));
+  return RayHit<T>{rounded, point.template cast<T>(), h->normal.template cast<T>()};
 }
 
 }  // namespace detail

@@ -10,7 +10,8 @@
 ///   4. clip_to_reference_face: the incident face clipped to the reference face's side planes.
 ///   5. keep_points_within_reach: the clipped ends deep enough, each moved midway between surfaces.
 ///   6. find_witness_point: when clipping found nothing, the candidate nearest to both shapes.
-///   7. name_end_vertex: a single incident point at or beyond an end of the reference face names that end.
+///   7. name_end_vertex: a single incident point (or a witness) at or beyond an end of the
+///      reference face names that end.
 /// Each point carries its feature id (feature.hpp) and its separation: the signed distance between
 /// the two surfaces along the normal at that point (negative when penetrating). A speculative
 /// distance keeps clipped points apart by up to it; speculative_contact_cores() is the contact of
@@ -584,19 +585,25 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   return witness;
 }
 
+/// Names the one point of out by the reference face's end vertex, with the incident vertex v, when
+/// x projects onto that end of the face or beyond it; otherwise leaves it.
+inline void name_end_vertex_at(const ReferenceFace& f, const Vec2c& x, unsigned v, CoreContact& out) {
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc along = (x - f.r1).dot(tangent);
+  if (along > 0 && along < tangent.squaredNorm()) return;
+  // r1 is the reference core's point f.face and r2 the next (a segment's face 1 runs from its point 1).
+  const unsigned end = along <= 0 ? f.face : unsigned(next_index(f.face, f.ref->size()));
+  const CoreFeature vertex{end, false}, point{v, false};
+  store_ids(out.ids, f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex), out.ids[1]);
+}
+
 /// Step 7, for a single incident point (a circle's centre, a capsule's coincident ends): a point
 /// that projects onto an end of the reference face, or beyond it, names that end's vertex, as
 /// closest_points() names it once the point leaves the core (so a point on a segment's end keeps
 /// its id as it moves off along the normal).
 inline void name_end_vertex(const ReferenceFace& f, CoreContact& out) {
   if (f.inc->size() != 1 || out.count != 1) return;
-  const Vec2c tangent = f.r2 - f.r1;
-  const Calc along = ((*f.inc)[0] - f.r1).dot(tangent);
-  if (along > 0 && along < tangent.squaredNorm()) return;
-  // r1 is the reference core's point f.face and r2 the next (a segment's face 1 runs from its point 1).
-  const unsigned end = along <= 0 ? f.face : unsigned(next_index(f.face, f.ref->size()));
-  const CoreFeature vertex{end, false}, point{0, false};
-  store_ids(out.ids, f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex), out.ids[1]);
+  name_end_vertex_at(f, (*f.inc)[0], 0, out);
 }
 
 /// Steps 2 to 7 from the axis of least penetration of two cores known to overlap. normals_p and
@@ -622,6 +629,9 @@ inline CoreContact contact_from_axis(const Core& p, const Core& q, const Axis& a
     store_separations(out.separations, -out.depth, out.separations[1]);
     store_ids(out.ids, face_point_id(f, deepest), out.ids[1]);
     out.count = 1;
+    // A witness beyond the face's span (the incident face lies past its end, so clipping kept
+    // nothing) is not on the face: it names the end.
+    name_end_vertex_at(f, out.points[0], deepest, out);
   }
   name_end_vertex(f, out);
   return out;
