@@ -484,6 +484,27 @@ TEST(ManifoldRegression, CornerLevelWithACapsuleEndKeepsItsIdThroughTheLevel) {
   }
 }
 
+/// Step 5 on its own, with the reference face given (the box's top face; the full contact of these
+/// shapes takes another face, of least penetration): the incident face runs from a vertex beyond the
+/// face's left side plane to a vertex exactly on it, so clipping carries the first end onto the
+/// second. The one point lies at the second vertex, unclipped, and must name it (vertex 1), not the
+/// vertex clipping moved there (0): as the incident face slides right, that vertex keeps the point.
+TEST(ManifoldRegression, ClippedEndCarriedOntoTheOtherNamesTheVertexThere) {
+  using V = Vec2<double>;
+  const Aabb<double> box(V(0, 0), V(2, 2));
+  const ConvexPolygon<double> wedge = *ConvexPolygon<double>::make({V(-1, 1.95), V(0, 1.9), V(3, 2.5), V(-1, 3)});
+  detail::Axis top;
+  top.normal = Vec2c(0, 1);
+  top.depth = 0.1;
+  top.owner = 0;
+  top.face = 2;
+  const detail::CoreContact c = detail::contact_from_axis(detail::core_of(box), detail::core_of(wedge), top);
+  ASSERT_EQ(c.count, 1);
+  EXPECT_EQ(c.points[0].x(), 0.0);
+  EXPECT_EQ(c.ids[0].kind_b, FeatureKind::Vertex);
+  EXPECT_EQ(c.ids[0].index_b, 1);
+}
+
 /// Parallel capsules 6.6 x 10^-6 apart with faces shorter than that (one point, along the
 /// points' direction), their top ends level, then 3.6 x 10^-11 either way along (3, 4): every
 /// pair of points on the common span is closest, and the point must name both sides, not the
