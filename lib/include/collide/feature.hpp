@@ -19,7 +19,8 @@
 /// - Polygon: vertex i is vertices()[i]; edge i runs from vertex i to vertex i + 1 (mod size()).
 ///   A placed polygon keeps this numbering when rounding makes its image not strictly convex (the
 ///   image is then the hull of its rounded vertices): an edge of that hull merged from several
-///   faces is named by the face its point lies nearest.
+///   faces is named by the face its point lies nearest, and a vertex that rounding merged with
+///   others by the one whose edges lie nearest its point.
 /// - Compound: the child's index in children() is child_a / child_b, the rest numbers the child.
 ///
 /// A point of a face contact carries the reference face (an edge) on the shape that owns it and
