@@ -594,6 +594,37 @@ TEST(ManifoldRegression, WitnessBeyondTheReferenceFaceNamesTheFacesEnd) {
   EXPECT_LT(reach, 1e-15) << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
 }
 
+/// A capsule whose segment starts at a box's top-left corner and runs left along the line of its
+/// top face, both placed by one rotation. Clipping keeps nothing (the segment lies beyond the
+/// face), and its two ends are equally deep up to rounding: the far one, 7 past the corner, came
+/// out an ulp deeper, and the point moved from it lay 7 off the box, so the box's corner itself
+/// was taken, which puts the box's surface point 0.5 off the box. The point must lie midway
+/// between the surfaces, at the corner moved half the depth into the box, and each surface point
+/// on its shape.
+TEST(ManifoldRegression, EndsEquallyDeepBeyondAFaceTakeTheOneAtTheFace) {
+  using V = Vec2<double>;
+  const Obb<double> a = *Obb<double>::make_with_axis(V(-12, -12), V(7, 1), V(1, 0));
+  const Capsule<double> b = *Capsule<double>::make(V(-19, -11), V(-26, -11), 1);
+  const Transform<double> x = *Transform<double>::make_with_rotation(V(-0x1.cb00000000007p+6, -0x1.b000000000007p+8),
+                                                                     V(0x1.fc82bbd1e4ca1p-1, -0x1.dd62b2f352a2cp-4));
+  const auto c = contact(a, x, b, x);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 1);
+  EXPECT_NEAR(c->depth, 1.0, 1e-12);
+  const auto local = [&](const Vec2c& w) { return x.unrotate(w - widen(x.position())); };
+  const Vec2c point = local(widen(c->points[0]));
+  EXPECT_NEAR(point.x(), -19.0, 1e-12);
+  EXPECT_NEAR(point.y(), -11.5, 1e-12);
+  const Vec2c half = x.unrotate(widen(c->normal)) * (c->separations[0] / 2);
+  const Vec2c on_a = point - half, on_b = point + half;
+  const Vec2c outside(std::max({-19.0 - on_a.x(), on_a.x() + 5.0, 0.0}),
+                      std::max({-13.0 - on_a.y(), on_a.y() + 11.0, 0.0}));
+  const double inside = std::min({on_a.x() + 19.0, -5.0 - on_a.x(), on_a.y() + 13.0, -11.0 - on_a.y()});
+  EXPECT_LT(outside.norm() + std::max(inside, 0.0), 1e-12) << "a's surface point off the box";
+  const double along = std::clamp(-(on_b.x() + 19.0) / 7.0, 0.0, 1.0);
+  EXPECT_NEAR((on_b - Vec2c(-19 - 7 * along, -11)).norm(), 1.0, 1e-12) << "b's surface point off the capsule";
+}
+
 /// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
 /// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
 /// between child pairs is measured at their deepest points, which the added point is not).

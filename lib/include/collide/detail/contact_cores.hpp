@@ -554,34 +554,44 @@ inline Calc excess_over(const Vec2c& x, const Core& c) {
 }
 
 /// Step 6: when clipping found nothing (the incident face misses a short reference face) or was
-/// not trusted, the candidate whose surface points lie nearest to the dilated cores: the incident
-/// core's deepest vertex moved halfway to the reference surface, the reference face's midpoint
-/// moved halfway to the incident surface, or a vertex of either core (often inside the other,
-/// when the shapes differ in size by orders of magnitude). The surface points are where the
-/// contact puts them, the candidate moved half the depth along the normal either way: a point
-/// inside both shapes but far from one surface (on a segment, say) is not midway.
+/// not trusted, the candidate whose surface points lie nearest to the dilated cores: an incident
+/// vertex moved halfway to the reference surface (the deepest first: vertices equally deep by
+/// rounding may lie far apart, one at the reference face's end and one beyond it), the reference
+/// face's midpoint moved halfway to the incident surface, or a vertex of either core (often
+/// inside the other, when the shapes differ in size by orders of magnitude). The surface points
+/// are where the contact puts them, the candidate moved half the depth along the normal either
+/// way: a point inside both shapes but far from one surface (on a segment, say) is not midway.
+/// deepest: the incident vertex that names the point, the one moved when such a candidate wins.
 inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFace& f, Calc depth, unsigned& deepest) {
   const Core& inc = *f.inc;
   Calc best = std::numeric_limits<Calc>::infinity();
   Vec2c witness = p[0];
   const Vec2c half = (f.owner == 0 ? f.normal : Vec2c(-f.normal)) * (depth * 0.5);  // from p toward q
-  auto consider_witness = [&](const Vec2c& x) {
-    const Calc e = std::max(excess_over(x + half, p), excess_over(x - half, q));
-    if (e < best) {
-      best = e;
-      witness = x;
-    }
-  };
   std::size_t k = 0;
   for (std::size_t j = 1; j < inc.size(); ++j) {
     if ((inc[j] - f.r1).dot(f.normal) < (inc[k] - f.r1).dot(f.normal)) k = j;
   }
   deepest = unsigned(k);
-  const Calc s = (inc[k] - f.r1).dot(f.normal);
-  consider_witness(inc[k] + f.normal * ((f.ref->radius - s - inc.radius) * 0.5));
-  consider_witness((f.r1 + f.r2) * 0.5 + f.normal * (f.ref->radius - depth * 0.5));
-  for (const Vec2c& x : p.pts()) consider_witness(x);
-  for (const Vec2c& x : q.pts()) consider_witness(x);
+  // name: the incident vertex naming x (the deepest, unless x is another one moved).
+  auto consider_witness = [&](const Vec2c& x, std::size_t name) {
+    const Calc e = std::max(excess_over(x + half, p), excess_over(x - half, q));
+    if (e < best) {
+      best = e;
+      witness = x;
+      deepest = unsigned(name);
+    }
+  };
+  auto consider_vertex = [&](std::size_t j) {
+    const Calc s = (inc[j] - f.r1).dot(f.normal);
+    consider_witness(inc[j] + f.normal * ((f.ref->radius - s - inc.radius) * 0.5), j);
+  };
+  consider_vertex(k);
+  for (std::size_t j = 0; j < inc.size(); ++j) {
+    if (j != k) consider_vertex(j);
+  }
+  consider_witness((f.r1 + f.r2) * 0.5 + f.normal * (f.ref->radius - depth * 0.5), k);
+  for (const Vec2c& x : p.pts()) consider_witness(x, k);
+  for (const Vec2c& x : q.pts()) consider_witness(x, k);
   return witness;
 }
 
