@@ -625,6 +625,40 @@ TEST(ManifoldRegression, EndsEquallyDeepBeyondAFaceTakeTheOneAtTheFace) {
   EXPECT_NEAR((on_b - Vec2c(-19 - 7 * along, -11)).norm(), 1.0, 1e-12) << "b's surface point off the capsule";
 }
 
+/// A float polygon whose right side runs through a vertex 1.8 x 10^-14 off the line of its two
+/// faces there (edges 1 and 2, 10^28 long), and a circle 2.3 x 10^20 inside, beside edge 2. The
+/// two faces tie for the least depth up to rounding, and edge 1, the first, was kept as the
+/// reference face though the centre projects 1.1 x 10^28 beyond its end: the point named a face
+/// that far from it. The point must name a feature it lies on: edge 2, or the vertex between.
+TEST(ManifoldRegression, CircleDeepInsideBesideATiedFaceNamesTheFaceItLiesOn) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> a = *ConvexPolygon<float>::make(
+      {V(-0x1.70dfdp+86f, -0x1.acd7e8p+95f), V(0x1.58p-127f, -0x1.acd7e8p+95f), V(0x1.42addep-46f, -0x1.24efd8p+93f),
+       V(0, 0x1.f33afep+95f), V(-0x1.70dfdp+86f, 0x1.f33b04p+95f)});
+  const Circle<float> b = *Circle<float>::make(V(0x1.aeaap+47f, 0x1.aeaeaep+47f), 0x1.aeb2aep+47f);
+  const Transform<float> xb = *Transform<float>::make_translation(V(-0x1.93eaaep+67f, 0x1.aeaeaep+47f));
+  for (const bool placed : {false, true}) {
+    const Circle<float> world =
+        *Circle<float>::make(V(-0x1.93eaaep+67f + 0x1.aeaap+47f, 0x1.aeaeaep+48f), 0x1.aeb2aep+47f);
+    const auto c = placed ? contact(a, Transform<float>(), b, xb) : contact(a, world);
+    ASSERT_TRUE(c.has_value()) << "placed " << placed;
+    ASSERT_EQ(c->count, 1);
+    const FeatureId& id = c->ids[0];
+    const Vec2c surface = widen(c->points[0]) - widen(c->normal) * (double(c->separations[0]) / 2);
+    const std::size_t n = a.size();
+    const auto edge_distance = [&](std::size_t e) {
+      const Vec2c p = widen(a[e]), d = widen(a[(e + 1) % n]) - p;
+      const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      return (surface - (p + d * t)).norm();
+    };
+    const double reach = id.kind_a == FeatureKind::Edge
+                             ? edge_distance(id.index_a)
+                             : std::min(edge_distance(id.index_a), edge_distance((id.index_a + n - 1) % n));
+    EXPECT_LT(reach, 1e23) << "placed " << placed << ": a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ")
+                           << int(id.index_a);
+  }
+}
+
 /// Two child pairs of compounds overlapping equally deep up to rounding: a speculative distance
 /// adds a point apart to one of them, and the pair contact(a, b) chose must still win (the tie
 /// between child pairs is measured at their deepest points, which the added point is not).

@@ -305,6 +305,30 @@ TEST(TransformRegression, FlattenedPolygonImageNamesTheStoredVertexAtItsEnd) {
   EXPECT_EQ(c->ids[0].index_a, 2);
 }
 
+/// A triangle 2.4 x 10^103 wide placed at y = 1.2 x 10^123, where its image flattens onto the
+/// segment from its vertices 0 and 2 (rounded onto one point) to vertex 1. A box's face clips it
+/// into two points, and both named vertex 1: each clipped point lies on vertex 1's two edges, and
+/// the nearest-edges rule looked among every stored vertex. Each end names a stored vertex at that
+/// end, so the two points name two features.
+TEST(TransformRegression, FlattenedPolygonImageNamesEachEndByItsOwnVertices) {
+  using V = Vec2<double>;
+  const ConvexPolygon<double> tri = *ConvexPolygon<double>::make({V(-0x1.13889b0c7cdf5p+334, -0x1.2250d05fd3551p+332),
+                                                                  V(0x1.5ee5510d9bf5ap+343, -0x1.2250d05fd3551p+332),
+                                                                  V(-0x1.13889b0c7cdf5p+334, 0x1.518d67a7acee7p+343)});
+  const Transform<double> xa = *Transform<double>::make_with_rotation(V(0x1.f1f1f1f1f1f1fp-526, 0x1.d8d1f1f1f1f1fp+408),
+                                                                      V(1, 0x1.6daa85519322fp-66));
+  const Obb<double> box = *Obb<double>::make_with_axis(V(-0x1.8782d9430d3ffp+391, -0x1.9c83e793be72p+389),
+                                                       V(0x1.98fcd74597d8dp+406, 0x1.97d58cd8f8d74p+390),
+                                                       V(0x1.6a09e667f3bcdp-1, 0x1.6a09e667f3bcdp-1));
+  const Transform<double> xb = *Transform<double>::make_with_rotation(V(0x1.f1f1f1f1f1f1fp-526, 0x1.d8d1f1f1f1f2p+408),
+                                                                      V(-0x1.6a09e667f3bc7p-1, -0x1.6a09e667f3bd1p-1));
+  const auto c = contact(tri, xa, box, xb);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 2);
+  EXPECT_NE(c->ids[0], c->ids[1]);
+  EXPECT_NE(c->ids[0].index_a, c->ids[1].index_a);
+}
+
 /// A polygon with vertices at 2^500 (the largest magnitude) placed by a translation of 2^449 and a
 /// tiny rotation: its bottom face's three vertices round onto one line, and one image vertex lies
 /// at 2^500 + 2^449, beyond the magnitude the factories accept. The image is the hull of the

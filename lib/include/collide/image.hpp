@@ -258,21 +258,34 @@ struct MappedEdges {
     }
     return best;
   }
-  /// Vertex `at`, or of the vertices first, ..., first + count - 1 (mod n), one whose edges (the
-  /// two that meet there, which a vertex feature spans) lie strictly nearer the point.
-  std::size_t nearest_vertex(std::size_t at, std::size_t first, std::size_t count) const noexcept {
+  /// Vertex `at`, or of the vertices first, ..., first + count - 1 (mod n) that `candidate`
+  /// accepts, one whose edges (the two that meet there, which a vertex feature spans) lie strictly
+  /// nearer the point.
+  template <class Candidate>
+  std::size_t nearest_vertex(std::size_t at, std::size_t first, std::size_t count,
+                             Candidate&& candidate) const noexcept {
     const std::size_t n = img.size();
     const auto reach = [&](std::size_t k) { return std::min(squared_distance(k), squared_distance((k + n - 1) % n)); };
     std::size_t best = at;
     Calc best_d2 = reach(at);
     for (std::size_t j = 0; j < count; ++j) {
       const std::size_t k = (first + j) % n;
+      if (!candidate(k)) continue;
       if (const Calc d2 = reach(k); d2 < best_d2) {
         best_d2 = d2;
         best = k;
       }
     }
     return best;
+  }
+  std::size_t nearest_vertex(std::size_t at, std::size_t first, std::size_t count) const noexcept {
+    return nearest_vertex(at, first, count, [](std::size_t) { return true; });
+  }
+  /// Whether mapped vertex k lies strictly nearer `end` than `other` (scaled, so no square
+  /// overflows).
+  bool nearer(std::size_t k, const Vec2c& end, const Vec2c& other) const noexcept {
+    const Vec2c p = img[k] * unit;
+    return (p - end * unit).squaredNorm() < (p - other * unit).squaredNorm();
   }
 };
 
@@ -314,9 +327,16 @@ void name_stored_features(const ConvexPolygon<T>& s, const Pose& x, C& c, bool s
       }
     } else {
       const Capsule<Calc> segment = flattened_segment(img);
-      stored = kind == FeatureKind::Vertex
-                   ? edges.nearest_vertex(mapped_index(img, index == 0 ? segment.a() : segment.b()), 0, n)
-                   : edges.nearest_edge(facing, 0, n);
+      if (kind == FeatureKind::Vertex) {
+        // Of the stored vertices, those at this end or dropped nearer it: one at the other end
+        // names the other end's point, and a contact's two points are two features.
+        const Vec2c& end = index == 0 ? segment.a() : segment.b();
+        const Vec2c& other = index == 0 ? segment.b() : segment.a();
+        stored = edges.nearest_vertex(mapped_index(img, end), 0, n,
+                                      [&](std::size_t k) { return edges.nearer(k, end, other); });
+      } else {
+        stored = edges.nearest_edge(facing, 0, n);
+      }
     }
     index = static_cast<std::uint8_t>(stored);
   }

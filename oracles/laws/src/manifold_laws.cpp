@@ -392,12 +392,28 @@ bool tied_faces(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& move
   return oracle::separates(in.exact_a(), in.exact_b(), Vec2<double>(-n * reach));
 }
 
+/// Whether features i0 and i1 (both of kind k) of the placed core lie within bound of each other.
+template <Scalar T>
+bool merged(const Placed<T>& part, const std::vector<Vec2c>& core, FeatureKind k, unsigned i0, unsigned i1,
+            double bound) {
+  const std::size_t n = core.size();
+  const auto at = [&](std::size_t i) { return part.apply(core[i % n]); };
+  if (k == FeatureKind::Vertex) return (at(i0) - at(i1)).norm() <= bound;
+  const std::array<Vec2c, 2> e0{at(i0), at(i0 + 1)}, e1{at(i1), at(i1 + 1)};
+  return std::max({distance_to_segment(e0[0], e1), distance_to_segment(e0[1], e1), distance_to_segment(e1[0], e0),
+                   distance_to_segment(e1[1], e0)}) <= bound;
+}
+
 /// Whether the ids of c and of moved differ only where one names a vertex of a child and the other
 /// an edge of that child ending at the vertex, with c's surface point on that child within reach
 /// of the vertex: the radius, twice the move, and 2 sqrt(size bound). Which of a vertex and an edge
 /// ending at it is nearer turns on two squared distances that differ by (l |d|)^2 for a point
 /// l |d| along the edge past the vertex, each rounded by about its length (at most size) times the
 /// bound: within 2 sqrt(size bound) of the vertex the rounding chooses, and either is right.
+/// Or where both name vertices, or both edges, of a child that lie within the point bound of each
+/// other (edges: each end within it of the other edge; a sliver's two long sides), or of a child
+/// no larger than that bound: rounding at the moved positions may merge them, and either names
+/// what they became.
 template <Scalar T>
 bool tied_vertex_edge(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move, double size) {
   const std::vector<Placed<T>> ka = placed_parts(in.a, in.xa), kb = placed_parts(in.b, in.xb);
@@ -405,13 +421,27 @@ bool tied_vertex_edge(const PairIn<T>& in, const Contact<T>& c, const Contact<T>
   // Side 0 (a) or 1 (b) of c's point i: its feature (k0, i0) against moved's (k1, i1) on that child.
   const auto side_tied = [&](int i, int side, FeatureKind k0, unsigned i0, FeatureKind k1, unsigned i1,
                              std::uint16_t child) {
-    if (k0 == k1) return i0 == i1;
+    if (k0 == k1 && i0 == i1) return true;
     const unsigned vertex = k0 == FeatureKind::Vertex ? i0 : i1, edge = k0 == FeatureKind::Edge ? i0 : i1;
     const Placed<T>* part = child_named(side == 0 ? ka : kb, child);
     if (part == nullptr) return false;
     double radius = 0;
     const std::vector<Vec2c> core = feature_core(part->shape, radius);
     const std::size_t n = core.size();
+    if (k0 == k1) {
+      // A child smaller than the bound is one point up to rounding, whatever features it has.
+      const double extent = std::visit(
+          [](const auto& x) {
+            const auto box = bounds(x);
+            return std::max(double(box.max().x()) - double(box.min().x()),
+                            double(box.max().y()) - double(box.min().y()));
+          },
+          part->shape);
+      if (extent <= point_bound(in, 0)) return true;
+      // A capsule's two sides lie 2 radius apart however near its core's ends are.
+      const bool sides_apart = k0 == FeatureKind::Edge && 2 * radius > point_bound(in, 0);
+      return n >= 2 && i0 < n && i1 < n && !sides_apart && merged(*part, core, k0, i0, i1, point_bound(in, 0));
+    }
     if (n < 2 || vertex >= n) return false;
     const bool incident = n == 2 ? edge <= 1 : edge < n && (edge == vertex || edge == (vertex + n - 1) % n);
     if (!incident) return false;
@@ -529,7 +559,8 @@ Verdict feature_ids_of(const PairIn<T>& in) {
         return;
       }
       if (tied_vertex_edge(in, *c, *cp, move, scale)) {
-        j.v.account += "; a vertex and an edge ending at it tied within the rounding (either may be reported)";
+        j.v.account +=
+            "; a vertex and an edge ending at it, or two vertices, tied within the rounding (either may be reported)";
         return;
       }
       j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself", ids_text(*c));

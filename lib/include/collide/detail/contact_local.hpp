@@ -64,7 +64,7 @@ LocalContact contact_circle_polygon_local(const Circle<T>& a, const Pose& xa, co
     return Vec2c(cq * nx - sq * ny, sq * nx + cq * ny);
   };
   if (!(local_excess > 0)) {
-    if (!(excess - r < -band) || (!(excess < -band) && projects_beyond_face(b, c, face, band))) return {};
+    if (!(excess - r < -band) || projects_beyond_face(b, c, face, band)) return {};
     return {true, circle_contact_inside(cw, r, turned(face), excess, face)};
   }
   const std::optional<CoreFeature> feature = feature_beyond_face(b, c, face);

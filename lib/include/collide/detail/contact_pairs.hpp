@@ -449,7 +449,10 @@ template <Scalar T>
 template <Scalar T>
 bool projects_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c, unsigned face, Calc band) noexcept {
   const Vec2c v0 = widen(b[face]), d = widen(b[next_index(face, b.size())]) - v0;
-  const Calc along = (c - v0).dot(d), len = norm_of(d);
+  const Calc along = (c - v0).dot(d), dd = d.squaredNorm();
+  if (along >= 0 && along <= dd) [[likely]]
+    return false;
+  const Calc len = norm_of(d);
   return along < -band * len || along > (len + band) * len;
 }
 
@@ -504,11 +507,11 @@ template <Scalar T>
     return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
   };
   if (!(excess > 0)) {
-    // The centre inside (certain when inside by more than the band).
-    if (!(excess < -band)) {
-      if (projects_beyond_face(b, c, face, band)) return contact_generic(a, b, speculative);
-      if (!decide_exactly(a, b)) return speculative_or_none();
-    }
+    // The centre inside (certain when inside by more than the band). Projecting beyond the face's
+    // span, it lies behind a face that rounding tied with this one (or outside, past a vertex
+    // sharper than the band): the faces decide.
+    if (projects_beyond_face(b, c, face, band)) return contact_generic(a, b, speculative);
+    if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
     return circle_contact_inside(c, r, normals[face], excess, face);
   }
   std::optional<CoreFeature> feature = feature_beyond_face(b, c, face);
