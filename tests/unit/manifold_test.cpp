@@ -561,6 +561,22 @@ TEST(ManifoldRegression, CircleBesideASegmentNearItsEndTakesTheSegmentsNormal) {
   }
 }
 
+/// How far a's surface point of c's first point lies from the feature of polygon a it names (a
+/// vertex: the nearer of its two edges).
+template <Scalar T>
+double reach_of_named_feature(const ConvexPolygon<T>& a, const Contact<T>& c) {
+  const FeatureId& id = c.ids[0];
+  const Vec2c surface = widen(c.points[0]) - widen(c.normal) * (double(c.separations[0]) / 2);
+  const std::size_t n = a.size();
+  const auto edge_distance = [&](std::size_t e) {
+    const Vec2c p = widen(a[e]), d = widen(a[(e + 1) % n]) - p;
+    const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    return (surface - (p + d * t)).norm();
+  };
+  return id.kind_a == FeatureKind::Edge ? edge_distance(id.index_a)
+                                        : std::min(edge_distance(id.index_a), edge_distance((id.index_a + n - 1) % n));
+}
+
 /// A polygon whose edges 1 and 2 are parallel to within 10^-16 (a corner at a subnormal vertex),
 /// touched by a segment beyond edge 1's end, at edge 2, 3 x 10^-11 past the corner. The faces tie
 /// for the least depth and edge 1, the first, is the reference face; clipping keeps nothing of the
@@ -581,17 +597,8 @@ TEST(ManifoldRegression, WitnessBeyondTheReferenceFaceNamesTheFacesEnd) {
   ASSERT_TRUE(c.has_value());
   ASSERT_EQ(c->count, 1);
   const FeatureId& id = c->ids[0];
-  const Vec2c surface = widen(c->points[0]) - widen(c->normal) * (c->separations[0] / 2);
-  const std::size_t n = a.size();
-  const auto edge_distance = [&](std::size_t e) {
-    const Vec2c p = widen(a[e]), d = widen(a[(e + 1) % n]) - p;
-    const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
-    return (surface - (p + d * t)).norm();
-  };
-  const double reach = id.kind_a == FeatureKind::Edge
-                           ? edge_distance(id.index_a)
-                           : std::min(edge_distance(id.index_a), edge_distance((id.index_a + n - 1) % n));
-  EXPECT_LT(reach, 1e-15) << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
+  EXPECT_LT(reach_of_named_feature(a, *c), 1e-15)
+      << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
 }
 
 /// A capsule whose segment starts at a box's top-left corner and runs left along the line of its
@@ -644,18 +651,8 @@ TEST(ManifoldRegression, CircleDeepInsideBesideATiedFaceNamesTheFaceItLiesOn) {
     ASSERT_TRUE(c.has_value()) << "placed " << placed;
     ASSERT_EQ(c->count, 1);
     const FeatureId& id = c->ids[0];
-    const Vec2c surface = widen(c->points[0]) - widen(c->normal) * (double(c->separations[0]) / 2);
-    const std::size_t n = a.size();
-    const auto edge_distance = [&](std::size_t e) {
-      const Vec2c p = widen(a[e]), d = widen(a[(e + 1) % n]) - p;
-      const double t = std::clamp((surface - p).dot(d) / d.squaredNorm(), 0.0, 1.0);
-      return (surface - (p + d * t)).norm();
-    };
-    const double reach = id.kind_a == FeatureKind::Edge
-                             ? edge_distance(id.index_a)
-                             : std::min(edge_distance(id.index_a), edge_distance((id.index_a + n - 1) % n));
-    EXPECT_LT(reach, 1e23) << "placed " << placed << ": a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ")
-                           << int(id.index_a);
+    EXPECT_LT(reach_of_named_feature(a, *c), 1e23)
+        << "placed " << placed << ": a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
   }
 }
 
