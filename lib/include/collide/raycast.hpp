@@ -212,15 +212,7 @@ inline std::optional<UnitRayHit> ray_core(const Core& c, const UnitRay& ray) {
     nn = Vec2c(e.y(), -e.x());
     p = c[i];
   };
-  if (std::optional<UnitRayHit> h = ray_half_planes(n, plane, ray)) return h;
-  // Across a polygon thinner than the rounding of its half-planes' distances, the ray's entry and
-  // exit may swap, and the half-planes report a miss; a ray crossing it still crosses an edge.
-  std::optional<UnitRayHit> best;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::optional<UnitRayHit> h = ray_segment(c[i], c[next_index(i, n)], ray);
-    if (closer(h, best)) best = h;
-  }
-  return best;
+  return ray_half_planes(n, plane, ray);
 }
 
 /// One primitive: early-out on its bounding box, then start the exact-shape cast from the box
