@@ -273,9 +273,11 @@ TEST(TransformRegression, RehulledPolygonImageNamesAClippedVertexByItsEdges) {
   ASSERT_TRUE(c.has_value());
   const detail::Pose pose = xa.pose();
   const std::size_t n = a.size();
+  int vertices = 0;
   for (int i = 0; i < c->count; ++i) {
     const FeatureId& id = c->ids[std::size_t(i)];
     if (id.kind_a != FeatureKind::Vertex) continue;
+    ++vertices;
     const Vec2c surface =
         widen(c->points[std::size_t(i)]) - widen(c->normal) * (double(c->separations[std::size_t(i)]) / 2);
     double reach = std::numeric_limits<double>::infinity();
@@ -287,6 +289,7 @@ TEST(TransformRegression, RehulledPolygonImageNamesAClippedVertexByItsEdges) {
     }
     EXPECT_LT(reach, 1e31) << "point " << i << " names vertex " << int(id.index_a);
   }
+  EXPECT_GT(vertices, 0) << "no point names a vertex of a: the clipped point this pins is gone";
 }
 
 /// A float triangle 10^-5 high translated to y = 2^40, where the float translation's image rounds
