@@ -601,6 +601,26 @@ TEST(ManifoldRegression, WitnessBeyondTheReferenceFaceNamesTheFacesEnd) {
       << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
 }
 
+/// A polygon whose edges 0, 1 and 2 are collinear up to rounding (tilts of 10^-26 and 10^-51 at
+/// 10^23), with a capsule deep inside it beside edge 2, 2.8 x 10^23 along. The three faces tie
+/// for the least depth and edge 0, 0.015 long, is the reference face; clipping keeps nothing, and
+/// the witness, past edge 0's end, was named by that end's vertex, 2.8 x 10^23 away. The point
+/// must name the face it lies along: edge 2, within the rounding of the point (10^17).
+TEST(ManifoldRegression, WitnessPastFacesContinuingTheReferenceFaceNamesTheOneItLiesOn) {
+  using V = Vec2<float>;
+  const ConvexPolygon<float> a = *ConvexPolygon<float>::make(
+      {V(-0x1.252524p-90f, -0x1.deb9fap-7f), V(0.0f, -0x1.252524p-89f), V(0.0f, 0x1.e043dap+21f),
+       V(-0x1.252524p-90f, 0x1.d2a88ep+78f), V(-0x1.b9fb0cp+97f, 0x1.bcb8ccp+98f)});
+  const Capsule<float> b =
+      *Capsule<float>::make(V(-0x1.deba2ap+41f, 0x1.e043dap+77f), V(-0x1.deba1p+42f, 0x1.e043dap+77f), 0x1.e0445cp+21f);
+  const auto c = contact(a, b);
+  ASSERT_TRUE(c.has_value());
+  ASSERT_EQ(c->count, 1);
+  const FeatureId& id = c->ids[0];
+  EXPECT_LT(reach_of_named_feature(a, *c), 1e17)
+      << "a's " << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a);
+}
+
 /// A capsule whose segment starts at a box's top-left corner and runs left along the line of its
 /// top face, both placed by one rotation. Clipping keeps nothing (the segment lies beyond the
 /// face), and its two ends are equally deep up to rounding: the far one, 7 past the corner, came

@@ -700,6 +700,49 @@ int prim_compare_boundary(const CoreInput& s, const Vec2d& p, double d) {
   return -sign_dist2_minus(pt, c, squared(y));
 }
 
+/// Some point of the closed segment [p, q] lies in the primitive deeper than d (farther than d
+/// from its boundary). In the rim of a dilated core the depth is r - dist(x, core); inside a
+/// polygon core it is r plus the least distance to an edge line, h_i(x) / |e_i| with h_i the
+/// cross product, affine along the segment: the deep points form an interval of the segment's
+/// parameter, cut by one bound per edge. Each |e_i| is rounded up, so only points deeper than d
+/// count, and every point deeper than d (1 + 2^-50) does.
+bool prim_passes_deeper(const CoreInput& s, const Vec2d& p, const Vec2d& q, double d) {
+  Upward upward;
+  const CoreInput seg = segment_spec(p, q);
+  const DualCore c(s), sc(seg);
+  const double r = s.radius;
+  auto rim = [&](auto tag) {
+    using NT = decltype(tag);
+    return NT(NT(r) - NT(d));
+  };
+  if (fsign(rim) > 0) return sign_dist2_minus(sc, c, squared(rim)) < 0;
+  if (c.size() < 3) return false;
+  const Rational e = Rational(d) - Rational(r);  // >= 0: the depth needed inside the core
+  const Core<Rational> core = realize<Rational>(s);
+  const Core<Interval>& approx = c.get<Interval>();
+  const P<Rational> a{Rational(p.x()), Rational(p.y())}, w = sub(P<Rational>{Rational(q.x()), Rational(q.y())}, a);
+  std::optional<Rational> lo, hi;  // the open interval of parameters deep enough for every edge
+  for (std::size_t i = 0; i < core.v.size(); ++i) {
+    const P<Rational> ev = sub(core.at(i + 1), core.at(i));
+    const P<Interval> ei = sub(approx.at(i + 1), approx.at(i));
+    const double length = CGAL::sqrt(dot(ei, ei)).sup();
+    if (!std::isfinite(length)) return false;
+    // h_i(a + t w) = h0 + t k > e * length
+    const Rational h0 = cross(ev, sub(a, core.at(i))), k = cross(ev, w);
+    const Rational need = e * Rational(length) - h0;
+    if (CGAL::is_zero(k)) {
+      if (!(need < 0)) return false;
+    } else if (k > 0) {
+      const Rational t = need / k;
+      if (!lo || *lo < t) lo = t;
+    } else {
+      const Rational t = need / k;
+      if (!hi || t < *hi) hi = t;
+    }
+  }
+  return (!lo || *lo < 1) && (!hi || *hi > 0) && (!lo || !hi || *lo < *hi);
+}
+
 bool prim_inside_box(const CoreInput& s, const Aabb<double>& box) {
   Upward upward;
   const DualCore c(s);
@@ -872,6 +915,17 @@ bool segment_meets(const Placed& s, const Vec2<double>& p, const Vec2<double>& q
   const Parts ps = parts_of(s);
   for (const CoreInput& x : ps.items) {
     if (prim_overlaps(seg, x)) return true;
+  }
+  return false;
+}
+
+bool passes_deeper(const Placed& s, const Vec2<double>& p, const Vec2<double>& q, double depth) {
+  require_finite(p, "point");
+  require_finite(q, "point");
+  require_finite(depth, "depth");
+  const Parts ps = parts_of(s);
+  for (const CoreInput& x : ps.items) {
+    if (prim_passes_deeper(x, p, q, depth)) return true;
   }
   return false;
 }

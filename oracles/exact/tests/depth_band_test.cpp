@@ -124,5 +124,58 @@ TEST(OracleBand, CompoundWithOverlapsNeedsEveryOverlappingChildShallow) {
   EXPECT_FALSE(oracle::within_band(two, other, 0.4));
 }
 
+TEST(OraclePassesDeeper, ABoxCrossedAlongItsMiddleIsAsDeepAsItsHalfHeight) {
+  const Aabb<double> box(V(0, 0), V(4, 1));
+  EXPECT_TRUE(oracle::passes_deeper(box, V(-1, 0.5), V(5, 0.5), 0.499));
+  EXPECT_FALSE(oracle::passes_deeper(box, V(-1, 0.5), V(5, 0.5), 0.5));
+  // Stopping 0.25 inside: the deepest point is the end.
+  EXPECT_TRUE(oracle::passes_deeper(box, V(-1, 0.5), V(0.25, 0.5), 0.2499));
+  EXPECT_FALSE(oracle::passes_deeper(box, V(-1, 0.5), V(0.25, 0.5), 0.25));
+  // One point: its own depth.
+  EXPECT_TRUE(oracle::passes_deeper(box, V(2, 0.3), V(2, 0.3), 0.29));
+  EXPECT_FALSE(oracle::passes_deeper(box, V(2, 0.3), V(2, 0.3), 0.3));
+  EXPECT_FALSE(oracle::passes_deeper(box, V(-1, 2), V(5, 2), 0.0));  // apart
+}
+
+TEST(OraclePassesDeeper, AThinSlabCrossedIsNeverDeeperThanHalfItsThickness) {
+  const Obb<double> slab = Obb<double>::make_with_axis(V(0, 0), V(1e22, 1e6), V(0.6, 0.8)).value();
+  EXPECT_FALSE(oracle::passes_deeper(slab, V(-3e7, -4e6), V(3e7, 4e6), 1e6));
+  EXPECT_TRUE(oracle::passes_deeper(slab, V(-3e7, -4e6), V(3e7, 4e6), 0.99e6));
+}
+
+TEST(OraclePassesDeeper, DisksAndCapsulesAreDeepNearTheirCores) {
+  const Circle<double> disk(V(0, 0), 1.0);
+  EXPECT_TRUE(oracle::passes_deeper(disk, V(-2, 0.6), V(2, 0.6), 0.399));
+  EXPECT_FALSE(oracle::passes_deeper(disk, V(-2, 0.6), V(2, 0.6), 0.4));
+  const Capsule<double> bar(V(0, 0), V(4, 0), 1.0);
+  EXPECT_TRUE(oracle::passes_deeper(bar, V(2, -3), V(2, 3), 0.999));
+  EXPECT_FALSE(oracle::passes_deeper(bar, V(2, -3), V(2, 3), 1.0));
+  EXPECT_FALSE(oracle::passes_deeper(bar, V(5.5, -3), V(5.5, 3), 0.0));  // past the end: outside
+}
+
+TEST(OraclePassesDeeper, APolygonsDepthIsItsLeastDistanceToAnEdgeLine) {
+  // Inradius 2 - sqrt(2), at (r, r): never equal to a double.
+  const ConvexPolygon<double> tri({V(0, 0), V(2, 0), V(0, 2)});
+  const double r = 2.0 - std::sqrt(2.0);
+  EXPECT_TRUE(oracle::passes_deeper(tri, V(-1, r), V(3, r), r - 1e-12));
+  EXPECT_FALSE(oracle::passes_deeper(tri, V(-1, r), V(3, r), r + 1e-12));
+  // Through a vertex only: depth 0 there.
+  EXPECT_FALSE(oracle::passes_deeper(tri, V(-1, 3), V(1, 1), 0.0));
+  EXPECT_TRUE(oracle::passes_deeper(tri, V(-1, 3), V(1, 0.9), 0.0));
+}
+
+TEST(OraclePassesDeeper, PlacedShapesAndCompoundsAnswerChildByChild) {
+  // Two unit boxes side by side: together 2 wide, but each child is only 0.5 deep.
+  const Compound<double> two({Aabb<double>(V(0, 0), V(1, 1)), Aabb<double>(V(1, 0), V(2, 1))});
+  EXPECT_FALSE(oracle::passes_deeper(two, V(-1, 0.5), V(3, 0.5), 0.5));
+  EXPECT_TRUE(oracle::passes_deeper(two, V(1.5, 0.5), V(1.5, 0.5), 0.49));
+  // The box [0, 4] x [0, 1] turned a quarter and moved by (10, 0): [9, 10] x [0, 4].
+  const Placed turned =
+      oracle::placed(Aabb<double>(V(0, 0), V(4, 1)), Transform<double>::make_with_rotation(V(10, 0), V(0, 1)).value());
+  EXPECT_TRUE(oracle::passes_deeper(turned, V(9.5, -1), V(9.5, 5), 0.49));
+  EXPECT_FALSE(oracle::passes_deeper(turned, V(9.5, -1), V(9.5, 5), 0.5));
+  EXPECT_FALSE(oracle::passes_deeper(turned, V(0.5, -1), V(0.5, 5), 0.0));  // where it was
+}
+
 }  // namespace
 }  // namespace collide::oracle

@@ -43,66 +43,6 @@ Verdict bounds_law(const Shape<T>& s) {
 
 namespace {
 
-/// The primitive shrunk by at least e (its points deeper than e), or nothing when that is empty or
-/// not built here (polygons). Used for the raycast contract: a ray must not pass a point deeper
-/// than the bound inside the shape before its hit.
-template <Scalar T>
-std::optional<Primitive<T>> eroded(const Primitive<T>& p, double e) {
-  auto less = [e](T v) -> std::optional<T> {
-    T r = T(double(v) - e);
-    if (double(r) > double(v) - e) r = std::nextafter(r, -std::numeric_limits<T>::infinity());
-    if (!(r > 0)) return std::nullopt;
-    return r;
-  };
-  return std::visit(
-      [&](const auto& s) -> std::optional<Primitive<T>> {
-        using S = std::remove_cvref_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, Circle<T>>) {
-          const auto r = less(s.radius());
-          if (!r) return std::nullopt;
-          return Circle<T>(s.center(), *r);
-        } else if constexpr (std::is_same_v<S, Capsule<T>>) {
-          const auto r = less(s.radius());
-          if (!r) return std::nullopt;
-          return Capsule<T>(s.a(), s.b(), *r);
-        } else if constexpr (std::is_same_v<S, Obb<T>>) {
-          const auto hx = less(s.half_extents().x()), hy = less(s.half_extents().y());
-          if (!hx || !hy) return std::nullopt;
-          auto r = ::collide::detail::ObbAccess::with_axis_of<T>(s.center(), Vec2<T>(*hx, *hy), s);
-          if (!r) return std::nullopt;
-          return r.value();
-        } else if constexpr (std::is_same_v<S, Aabb<T>>) {
-          const Vec2<T> h = (s.max() - s.min()) / T(2);
-          const auto hx = less(h.x()), hy = less(h.y());
-          if (!hx || !hy) return std::nullopt;
-          Vec2<T> lo(T(double(s.min().x()) + e), T(double(s.min().y()) + e));
-          Vec2<T> hi(T(double(s.max().x()) - e), T(double(s.max().y()) - e));
-          for (int k = 0; k < 2; ++k) {
-            if (double(lo[k]) < double(s.min()[k]) + e)
-              lo[k] = std::nextafter(lo[k], std::numeric_limits<T>::infinity());
-            if (double(hi[k]) > double(s.max()[k]) - e)
-              hi[k] = std::nextafter(hi[k], -std::numeric_limits<T>::infinity());
-          }
-          auto r = Aabb<T>::make(lo, hi);
-          if (!r) return std::nullopt;
-          return r.value();
-        } else {
-          return std::nullopt;
-        }
-      },
-      p);
-}
-
-/// The segment [p, q] passes a point deeper than e inside s (checked on the erodable children).
-template <Scalar T>
-bool passes_deep(const Shape<T>& s, const Vec2c& p, const Vec2c& q, double e) {
-  for (const auto& child : detail::placed_primitives_of(s)) {
-    const auto core = eroded(child.shape, e);
-    if (core && oracle::segment_meets(oracle::placed(*core, child.transform), p, q)) return true;
-  }
-  return false;
-}
-
 /// o lies in s farther than `bound` from its boundary (for a compound: from some child's
 /// boundary, inside that child), exactly: the origins for which the ray must hit at t = 0.
 template <Scalar T>
@@ -210,7 +150,7 @@ Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
       const double t_end = double(max_t) - shorten;
       if (inside && deep_inside(s, o, bound)) {
         fail("a hit at t = 0 (origin inside the shape, deeper than the bound)", "no hit");
-      } else if (t_end > 0 && passes_deep(s, o, Vec2c(o + d * t_end), bound)) {
+      } else if (t_end > 0 && oracle::passes_deeper(s, o, Vec2c(o + d * t_end), bound)) {
         fail("no point deeper than the bound on the segment to max_t", "no hit");
       }
       return v;
@@ -244,7 +184,7 @@ Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
       return v;
     }
     const double t_early = t - (len > 0 ? bound / len : 0);
-    if (t_early > 0 && passes_deep(s, o, Vec2c(o + d * t_early), bound)) {
+    if (t_early > 0 && oracle::passes_deeper(s, o, Vec2c(o + d * t_early), bound)) {
       fail("no point deeper than the bound before t", "the shape meets the ray before t " + num(t_early));
       return v;
     }

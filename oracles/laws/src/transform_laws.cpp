@@ -335,11 +335,10 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
                     "hit point on the ray", "off by " + num(off));
         } else if (d.allFinite() && (d.x() != 0 || d.y() != 0)) {
           const Vec2c end = o + d * double(max_t);
-          if (end.allFinite() && end.cwiseAbs().maxCoeff() < 0x1p120 && oracle::segment_meets(ps, o, end)) {
-            const auto seg = collide::detail::ShapeAccess::capsule<double>(o, end, 0.0);
-            j.require(oracle::within_band(ps, oracle::Placed(Shape<double>(seg)), delta),
-                      "a miss only within " + num(delta) + " of the shape", "no hit, the segment meets it");
-          }
+          if (end.allFinite() && end.cwiseAbs().maxCoeff() < 0x1p120)
+            j.require(!oracle::passes_deeper(ps, o, end, delta),
+                      "a miss only where no point of the segment is deeper than " + num(delta) + " in the shape",
+                      "no hit, the segment passes deeper");
         }
       });
 }

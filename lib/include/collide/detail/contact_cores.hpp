@@ -595,16 +595,44 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   return witness;
 }
 
+/// The feature of a polygon reference core that x, beyond the face's end vertex `end` (forward:
+/// past r2), lies along when the faces past that end are the face's continuation: each at the
+/// same offset from x as the face up to rounding (nearly collinear faces, tied as reference faces
+/// whichever the search kept). The first such face x projects inside, else the vertex where the
+/// walk stops.
+inline CoreFeature feature_along_tied_faces(const ReferenceFace& f, const Vec2c& x, unsigned end, bool forward) {
+  const Core& ref = *f.ref;
+  const std::size_t n = ref.size();
+  if (n < 3) return {end, false};
+  Calc scale = x.cwiseAbs().maxCoeff();
+  for (const Vec2c& v : ref.pts()) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+  const Calc band = kOverlapErrorFactor * kUnitRoundoff * scale;
+  const Calc offset = (x - f.r1).dot(f.normal);
+  for (std::size_t step = 1; step < n - 1; ++step) {
+    const unsigned face = forward ? end : unsigned((end + n - 1) % n);
+    const Vec2c a = ref[face], b = ref[next_index(face, n)], e = b - a;
+    if (e == Vec2c::Zero()) break;
+    if (!(std::abs((x - a).dot(unit_of(Vec2c(e.y(), -e.x()))) - offset) <= band)) break;
+    const Calc along = (x - a).dot(e);
+    if (along > 0 && along < e.squaredNorm()) return {face, true};
+    if (forward ? along <= 0 : along >= e.squaredNorm()) break;  // at the vertex between
+    end = forward ? unsigned(next_index(face, n)) : face;
+  }
+  return {end, false};
+}
+
 /// Names the one point of out by the reference face's end vertex, with the incident vertex v, when
-/// x projects onto that end of the face or beyond it; otherwise leaves it.
+/// x projects onto that end of the face or beyond it; otherwise leaves it. Past an end, faces
+/// continuing the reference face (feature_along_tied_faces()) name the point where it lies.
 inline void name_end_vertex_at(const ReferenceFace& f, const Vec2c& x, unsigned v, CoreContact& out) {
   const Vec2c tangent = f.r2 - f.r1;
   const Calc along = (x - f.r1).dot(tangent);
   if (along > 0 && along < tangent.squaredNorm()) return;
   // r1 is the reference core's point f.face and r2 the next (a segment's face 1 runs from its point 1).
-  const unsigned end = along <= 0 ? f.face : unsigned(next_index(f.face, f.ref->size()));
-  const CoreFeature vertex{end, false}, point{v, false};
-  store_ids(out.ids, f.owner == 0 ? id_of(vertex, point) : id_of(point, vertex), out.ids[1]);
+  const bool forward = along > 0;
+  const unsigned end = forward ? unsigned(next_index(f.face, f.ref->size())) : f.face;
+  const CoreFeature feature = feature_along_tied_faces(f, x, end, forward), point{v, false};
+  store_ids(out.ids, f.owner == 0 ? id_of(feature, point) : id_of(point, feature), out.ids[1]);
 }
 
 /// Step 7, for a single incident point (a circle's centre, a capsule's coincident ends): a point

@@ -68,6 +68,7 @@ int compare_depth(const Placed& a, const Placed& b, double len);
 bool inside_box(const Placed& s, const Aabb<double>& box);
 int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d);
 bool segment_meets(const Placed& s, const Vec2<double>& p, const Vec2<double>& q);
+bool passes_deeper(const Placed& s, const Vec2<double>& p, const Vec2<double>& q, double depth);
 double approx_signed_distance(const Placed& a, const Placed& b);
 }  // namespace exact
 
@@ -173,6 +174,15 @@ int compare_boundary_distance(const S& s, const Vec2<T>& p, double d) {
 template <OracleInput S>
 bool segment_meets(const S& s, const Vec2<double>& p, const Vec2<double>& q) {
   return exact::segment_meets(as_exact_input(s), p, q);
+}
+
+/// Exact up to a relative 2^-50 of depth: some point of the closed segment [p, q] lies inside the
+/// shape farther than depth from its boundary (for a compound: inside some child, farther than
+/// depth from that child's boundary). True only for such a point, and whenever some point is
+/// deeper than depth (1 + 2^-50). A thin shape (no point deeper than depth) is never passed deep.
+template <OracleInput S>
+bool passes_deeper(const S& s, const Vec2<double>& p, const Vec2<double>& q, double depth) {
+  return exact::passes_deeper(as_exact_input(s), p, q, depth);
 }
 
 /// For reports only: the signed distance rounded to double (gap > 0, touching 0, -depth < 0;

@@ -93,8 +93,8 @@ Verdict bounds_law(const Shape<T>& s);
 /// delta = raycast_tolerance(s, ray): a hit has 0 <= t <= max_t, its point is within delta of the
 /// shape and of origin + t * direction; an origin inside the shape (deeper than delta) hits at
 /// t = 0; before the hit (or up to max_t when there is none) the ray passes no point deeper than
-/// delta inside the shape, checked by oracle::segment_meets against the shape shrunk by delta
-/// (circles, capsules, AABBs, OBBs and such compound children; polygons are not shrunk here).
+/// delta inside the shape (a compound: inside a child, deeper than delta in it), checked by
+/// oracle::passes_deeper.
 /// The hit normal: a unit vector; at t = 0, -direction / |direction|; otherwise an outward normal
 /// of the boundary at the point: q = point + L * normal (L the shape's size, at least 2^20 bounds)
 /// lies outside the shape (for compounds, outside some child near the point) at distance at least
@@ -258,8 +258,9 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
 
 /// Law placed_shape. One placed shape: bounds(s, x) contains the exact image; contains(s, x, p) equals the
 /// oracle outside transform_tolerance(s, x) of the boundary; a raycast hit has 0 <= t <= max_t and
-/// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means the
-/// segment to max_t meets the image only within that bound. Identity: the world-space answers.
+/// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means no
+/// point of the segment to max_t lies deeper than that bound in the image (oracle::passes_deeper).
+/// Identity: the world-space answers.
 template <Scalar T>
 Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p, const Ray<T>& ray, T max_t);
 
