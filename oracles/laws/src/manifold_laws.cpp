@@ -415,7 +415,7 @@ bool merged(const Placed<T>& part, const std::vector<Vec2c>& core, FeatureKind k
 /// no larger than that bound: rounding at the moved positions may merge them, and either names
 /// what they became.
 template <Scalar T>
-bool tied_vertex_edge(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move, double size) {
+bool tied_features(const PairIn<T>& in, const Contact<T>& c, const Contact<T>& moved, double move, double size) {
   const std::vector<Placed<T>> ka = placed_parts(in.a, in.xa), kb = placed_parts(in.b, in.xb);
   const double reach = 2 * move + 2 * std::sqrt(size * point_bound(in, 0));
   // Side 0 (a) or 1 (b) of c's point i: its feature (k0, i0) against moved's (k1, i1) on that child.
@@ -558,7 +558,7 @@ Verdict feature_ids_of(const PairIn<T>& in) {
         j.v.account += "; faces tied for the least depth within the move (either may be reported)";
         return;
       }
-      if (tied_vertex_edge(in, *c, *cp, move, scale)) {
+      if (tied_features(in, *c, *cp, move, scale)) {
         j.v.account +=
             "; a vertex and an edge ending at it, or two vertices, tied within the rounding (either may be reported)";
         return;
