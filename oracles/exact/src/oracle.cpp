@@ -705,7 +705,8 @@ int prim_compare_boundary(const CoreInput& s, const Vec2d& p, double d) {
 /// polygon core it is r plus the least distance to an edge line, h_i(x) / |e_i| with h_i the
 /// cross product, affine along the segment: the deep points form an interval of the segment's
 /// parameter, cut by one bound per edge. Each |e_i| is rounded up, so only points deeper than d
-/// count, and every point deeper than d (1 + 2^-50) does.
+/// count, and every point deeper than d (1 + 2^-50) does while the edges' squared lengths are
+/// normal doubles (edges between 2^-511 and 2^511 long; a longer one answers false).
 bool prim_passes_deeper(const CoreInput& s, const Vec2d& p, const Vec2d& q, double d) {
   Upward upward;
   const CoreInput seg = segment_spec(p, q);
@@ -719,13 +720,12 @@ bool prim_passes_deeper(const CoreInput& s, const Vec2d& p, const Vec2d& q, doub
   if (c.size() < 3) return false;
   const Rational e = Rational(d) - Rational(r);  // >= 0: the depth needed inside the core
   const Core<Rational> core = realize<Rational>(s);
-  const Core<Interval>& approx = c.get<Interval>();
   const P<Rational> a{Rational(p.x()), Rational(p.y())}, w = sub(P<Rational>{Rational(q.x()), Rational(q.y())}, a);
   std::optional<Rational> lo, hi;  // the open interval of parameters deep enough for every edge
   for (std::size_t i = 0; i < core.v.size(); ++i) {
     const P<Rational> ev = sub(core.at(i + 1), core.at(i));
-    const P<Interval> ei = sub(approx.at(i + 1), approx.at(i));
-    const double length = CGAL::sqrt(dot(ei, ei)).sup();
+    // From the exact squared length, so that a short edge far out keeps its relative precision.
+    const double length = CGAL::sqrt(Interval(CGAL::to_interval(dot(ev, ev)))).sup();
     if (!std::isfinite(length)) return false;
     // h_i(a + t w) = h0 + t k > e * length
     const Rational h0 = cross(ev, sub(a, core.at(i))), k = cross(ev, w);

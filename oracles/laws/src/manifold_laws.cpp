@@ -560,7 +560,7 @@ Verdict feature_ids_of(const PairIn<T>& in) {
       }
       if (tied_features(in, *c, *cp, move, scale)) {
         j.v.account +=
-            "; a vertex and an edge ending at it, or two vertices, tied within the rounding (either may be reported)";
+            "; a vertex and an edge ending at it, or two features merged by rounding, tied (either may be reported)";
         return;
       }
       j.broken("the ids of b moved by +-" + vec(t) + " (" + ids_text(*cp) + ") for b itself", ids_text(*c));

@@ -179,7 +179,8 @@ bool segment_meets(const S& s, const Vec2<double>& p, const Vec2<double>& q) {
 /// Exact up to a relative 2^-50 of depth: some point of the closed segment [p, q] lies inside the
 /// shape farther than depth from its boundary (for a compound: inside some child, farther than
 /// depth from that child's boundary). True only for such a point, and whenever some point is
-/// deeper than depth (1 + 2^-50). A thin shape (no point deeper than depth) is never passed deep.
+/// deeper than depth (1 + 2^-50) (polygon edges between 2^-511 and 2^511 long; an edge shorter
+/// counts as longer, one longer makes the answer false). A thin shape is never passed deep.
 template <OracleInput S>
 bool passes_deeper(const S& s, const Vec2<double>& p, const Vec2<double>& q, double depth) {
   return exact::passes_deeper(as_exact_input(s), p, q, depth);
