@@ -350,6 +350,36 @@ TEST(TransformRegression, PolygonImageBeyondTheLargestMagnitudeIsStillItsHull) {
     EXPECT_NEAR(d, p.y(), 1e-6 * p.y());
 }
 
+/// A 13-unit AABB and a triangle 0.094 wide at its centre, both stored near (-10^6, 10^6) and
+/// placed near the origin by one rotation: the box's bottom face and the triangle's top face lie
+/// on one axis and are exactly as deep, so a's face is the reference (feature.hpp) wherever b
+/// slides a little. The images' points round at their stored magnitude, 10^6, not at the world's
+/// 2 10^4, which moved the two faces' computed depths 10^-10 apart, beyond the tie of the world
+/// scale: b's face took over at one position in eight. A failure names a position whose reference
+/// face is another.
+TEST(TransformRegression, FacesEquallyDeepInPlacedImagesKeepAsFaceAsTheReference) {
+  using V = Vec2<double>;
+  const Aabb<double> box = *Aabb<double>::make(V(-0x1.e85p+19, 0x1.e8486p+19), V(-0x1.e84e6p+19, 0x1.e84ap+19));
+  const Transform<double> x = *Transform<double>::make_with_rotation(V(0x1.e847p+19, -0x1.e848p+19),
+                                                                     V(0x1.ffed789fc7a41p-1, -0x1.137a9c2cb3e7ep-6));
+  const std::array<V, 3> triangle{V(-0x1.e84f2ep+19, 0x1.e849305555555p+19), V(-0x1.e84f31p+19, 0x1.e849305555555p+19),
+                                  V(-0x1.e84f31p+19, 0x1.e8492f5555555p+19)};
+  for (int k = -100; k <= 100; ++k) {
+    const V t = V(3, 4) * (k * 0x1p-17);
+    const ConvexPolygon<double> b = *ConvexPolygon<double>::make({triangle[0] + t, triangle[1] + t, triangle[2] + t});
+    const std::optional<Contact<double>> c = contact(box, x, b, x);
+    ASSERT_TRUE(c) << "b moved by " << k << " steps";
+    ASSERT_EQ(c->count, 2) << "b moved by " << k << " steps";
+    for (int i = 0; i < 2; ++i) {
+      const FeatureId& id = c->ids[std::size_t(i)];
+      EXPECT_TRUE(id.kind_a == FeatureKind::Edge && id.index_a == 0 && id.kind_b == FeatureKind::Vertex)
+          << "b moved by " << k << " steps: point " << i << " names a's "
+          << (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_a) << " and b's "
+          << (id.kind_b == FeatureKind::Edge ? "edge " : "vertex ") << int(id.index_b);
+    }
+  }
+}
+
 // A circle against a polygon turned by a general rotation is computed in the polygon's frame
 // (detail/contact_local.hpp), not on the images. Its answer must be the images' answer: present
 // exactly when the imaged pair's contact is (both are exact on the computed images), the same

@@ -114,6 +114,12 @@ inline constexpr Calc kClipLengthRatio = 0x1p40;
 /// feature ids while the pair moves.
 inline constexpr Calc kFaceOrderTie = 16.0;
 
+/// Contact generation: the cosine within which a face of the second shape counts as parallel to
+/// (facing) the first shape's face of least penetration (about 3.6 degrees), so that the images'
+/// rounding widens the tie between them (detail::least_penetration_by()): parallel faces equally
+/// deep in the exact shapes keep the first shape's face as the reference.
+inline constexpr Calc kParallelFaceCosine = 0.998;
+
 /// Absolute floor of the error bounds of rounded outputs (about 3.1e-151; decisions are exact
 /// and need none). A bound, not the typical error: shapes whose every value is below 2^-400 are
 /// rescaled exactly by a power of two before any rounded computation (see detail::tiny_scale), so

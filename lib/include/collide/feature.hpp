@@ -26,10 +26,12 @@
 /// A point of a face contact carries the reference face (an edge) on the shape that owns it and
 /// the incident vertex it comes from on the other shape; an incident vertex clipped back to the
 /// reference face's side keeps that vertex's id, so the ids stay the same while the two faces stay
-/// the reference and incident faces. Of two parallel faces equally deep up to rounding, a's is the
-/// reference face. A point of two rounded cores apart (circles, capsules) names the closest
-/// features of the cores; between parallel faces, where every point of their common span is
-/// closest, it names both edges.
+/// the reference and incident faces. Of two parallel faces equally deep up to rounding (for
+/// placed shapes, up to their images' rounding too: transform_tolerance()), the reference face is
+/// that of the shape whose kind comes first in the registry (a turned AABB counts as an OBB), a's
+/// for two of one kind: contact(b, a) is contact(a, b) seen from b. A point of two rounded cores
+/// apart (circles, capsules) names the closest features of the cores; between parallel faces,
+/// where every point of their common span is closest, it names both edges.
 
 #include <cstdint>
 

@@ -181,19 +181,19 @@ void round_into(const CoreContact& c, std::optional<Contact<T>>& out) {
 
 /// The contact of two primitives in either order (contact_pair() takes registry order; the other
 /// order is the same contact seen from b: normal reversed, ids swapped). A stored float shape met
-/// by a double image (a transformed query) is widened first, exactly.
+/// by a double image (a transformed query) is widened first, exactly. rounding: as contact_pair().
 template <PrimitiveShape A, PrimitiveShape B>
-std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc speculative) {
+std::optional<CoreContact> contact_primitives(const A& a, const B& b, Calc speculative, Rounding rounding = {}) {
   if constexpr (!std::is_same_v<scalar_of_t<A>, scalar_of_t<B>>) {
     if constexpr (std::is_same_v<scalar_of_t<A>, float>) {
-      return contact_primitives(widened_shape(a), b, speculative);
+      return contact_primitives(widened_shape(a), b, speculative, rounding);
     } else {
-      return contact_primitives(a, widened_shape(b), speculative);
+      return contact_primitives(a, widened_shape(b), speculative, rounding);
     }
   } else if constexpr (static_cast<int>(kind_of_v<A>) <= static_cast<int>(kind_of_v<B>)) {
-    return contact_pair(a, b, speculative);
+    return contact_pair(a, b, speculative, rounding);
   } else {
-    std::optional<CoreContact> c = contact_pair(b, a, speculative);
+    std::optional<CoreContact> c = contact_pair(b, a, speculative, rounding);
     if (c) *c = reversed(*c);
     return c;
   }
@@ -219,9 +219,10 @@ inline bool deeper_contact(const CoreContact& c, const CoreContact& than) noexce
                        : c.separations[deepest_point(c)] < than.separations[deepest_point(than)] - tie;
 }
 
-/// The contact of concrete shapes, stored or placed (images, placed compounds).
+/// The contact of concrete shapes, stored or placed (images, placed compounds). rounding: as
+/// contact_pair() takes it (empty for stored primitives).
 template <class A, class B>
-std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc speculative = 0) {
+std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc speculative = 0, Rounding rounding = {}) {
   if constexpr (is_compound_v<A> || is_compound_v<B>) {
     // The cached bounding boxes first (without a speculative distance), then every child pair.
     if (!(speculative > 0) && !decide::aabb_aabb(calc_bounds(a), calc_bounds(b))) return std::nullopt;
@@ -230,7 +231,7 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
     for_each_primitive(a, [&](const auto& ca) {
       std::uint16_t ib = 0;
       for_each_primitive(b, [&](const auto& cb) {
-        std::optional<CoreContact> c = contact_primitives(ca, cb, speculative);
+        std::optional<CoreContact> c = contact_primitives(ca, cb, speculative, rounding);
         if (c && (!best || deeper_contact(*c, *best))) {
           for (FeatureId& id : c->ids) {
             id.child_a = ia;
@@ -248,7 +249,7 @@ std::optional<CoreContact> contact_concrete(const A& a, const B& b, Calc specula
     }
     return best;
   } else {
-    return contact_primitives(a, b, speculative);
+    return contact_primitives(a, b, speculative, rounding);
   }
 }
 
@@ -262,8 +263,12 @@ Calc speculative_distance(T speculative) noexcept {
 template <Scalar T, class A, class B>
 std::optional<Contact<T>> contact_as(const A& a, const B& b, T speculative = T(0)) {
   const Calc spec = speculative_distance(speculative);
-  const std::optional<CoreContact> c =
-      visit_shapes(a, b, [&](const auto& ca, const auto& cb) { return contact_concrete(ca, cb, spec); });
+  const std::optional<CoreContact> c = visit_shapes(a, b, [&](const auto& ca, const auto& cb) {
+    // A compound's children placed by child transforms are images; primitives are stored exactly.
+    const auto placements = [&] { return placement_tolerance(ca) + placement_tolerance(cb); };
+    constexpr bool compound = is_compound_v<std::decay_t<decltype(ca)>> || is_compound_v<std::decay_t<decltype(cb)>>;
+    return contact_concrete(ca, cb, spec, compound ? Rounding(placements) : Rounding());
+  });
   std::optional<Contact<T>> out;
   if (c) round_into(*c, out);
   return out;

@@ -115,6 +115,54 @@ Calc image_tolerance_of(const S& s, const Transform<T>& x) {
   return image_tolerance(x.pose(), local_extent(s));
 }
 
+/// At least local_extent(s), from the stored values alone (their magnitudes plus the radius or
+/// half extents; a polygon's cached largest coordinate): the bounding box's outward rounding costs
+/// more than a contact's tie needs.
+template <class S>
+Calc rough_extent(const S& s) noexcept {
+  using T = scalar_of_t<S>;
+  if constexpr (is_compound_v<S>) {
+    return s.local_extent();
+  } else if constexpr (std::is_same_v<S, Circle<T>>) {
+    return widen(s.center()).cwiseAbs().maxCoeff() + Calc(s.radius());
+  } else if constexpr (std::is_same_v<S, Aabb<T>>) {
+    return std::max(widen(s.min()).cwiseAbs().maxCoeff(), widen(s.max()).cwiseAbs().maxCoeff());
+  } else if constexpr (std::is_same_v<S, Obb<T>>) {
+    return widen(s.center()).cwiseAbs().maxCoeff() + Calc(s.half_extents().x()) + Calc(s.half_extents().y());
+  } else if constexpr (std::is_same_v<S, Capsule<T>>) {
+    return std::max(widen(s.a()).cwiseAbs().maxCoeff(), widen(s.b()).cwiseAbs().maxCoeff()) + Calc(s.radius());
+  } else {
+    return PolygonAccess::largest_coordinate(s);
+  }
+}
+
+/// Whether a concrete shape may have faces (every kind but the circle; a compound's children may):
+/// only a pair of such shapes can tie two faces for the reference (contact_pair()'s rounding).
+template <class S>
+constexpr bool has_faces(const S&) noexcept {
+  return !std::is_same_v<S, Circle<float>> && !std::is_same_v<S, Circle<double>>;
+}
+
+/// Whether the image of the concrete shape s under x may round at a magnitude beyond the image's
+/// own: under a turn the products R(q) v round at |v|, and a compound's children are images of
+/// their child transforms. Under a translation each image point v + p rounds once, well within the
+/// tie of the image's own scale.
+template <class S, Scalar T>
+bool rounds_beyond_image(const S& s, const Transform<T>& x) noexcept {
+  if constexpr (is_compound_v<S>) {
+    if (s.has_child_transforms()) return true;
+  }
+  return x.rotation() != Vec2<T>(T(1), T(0));
+}
+
+/// How far the computed image of the concrete shape s under x may lie from the exact image, as
+/// transform_tolerance() bounds it but from rough_extent() (and not 0 for the identity):
+/// contact_pair()'s rounding.
+template <class S, Scalar T>
+Calc image_rounding(const S& s, const Transform<T>& x) noexcept {
+  return image_tolerance(x.pose(), rough_extent(s));
+}
+
 /// Calls f(a placed, b placed) for two concrete shapes.
 template <class A, class B, Scalar T, class F>
 decltype(auto) with_placed_both(const A& a, const Transform<T>& xa, const B& b, const Transform<T>& xb, F&& f) {
@@ -201,7 +249,11 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
     }
     const std::optional<detail::CoreContact> c =
         detail::with_placed_both(ca, xa, cb, xb, [&](const auto& pa, const auto& pb) {
-          std::optional<detail::CoreContact> found = detail::contact_concrete(pa, pb, speculative);
+          const auto images = [&] { return detail::image_rounding(ca, xa) + detail::image_rounding(cb, xb); };
+          const bool beyond = detail::has_faces(pa) && detail::has_faces(pb) &&
+                              (detail::rounds_beyond_image(ca, xa) || detail::rounds_beyond_image(cb, xb));
+          std::optional<detail::CoreContact> found =
+              detail::contact_concrete(pa, pb, speculative, beyond ? detail::Rounding(images) : detail::Rounding());
           if (found) {
             detail::name_placed_features(ca, pa, xa, *found, false);
             detail::name_placed_features(cb, pb, xb, *found, true);

@@ -697,14 +697,21 @@ Verdict resting_of(const PairIn<T>& in) {
                    "points along the faces at " + num(s0) + " and " + num(s1));
           return;
         }
-        // Faces parallel to the bit are equally deep up to rounding: a's is the reference face.
+        // Faces parallel to the bit are equally deep up to rounding: the reference face is that
+        // of the shape whose kind comes first in the registry, a's for two of one kind.
+        const bool a_first = static_cast<int>(kind(in.a)) <= static_cast<int>(kind(in.b));
+        const std::size_t ref = a_first ? ip : std::size_t(&q - fb.data());
         for (std::size_t k = 0; cross == 0 && k < 2; ++k) {
           const FeatureId& id = c.ids[k];
-          if (id.kind_a != FeatureKind::Edge || id.index_a != ip) {
-            j.broken("each point naming a's face " + std::to_string(ip) +
-                         " (of two faces parallel to the bit, a's is the reference face)",
-                     "point " + std::to_string(k) + " names a's " +
-                         (id.kind_a == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(id.index_a));
+          const FeatureKind got = a_first ? id.kind_a : id.kind_b;
+          const unsigned index = a_first ? id.index_a : id.index_b;
+          const std::string owner = a_first ? "a's" : "b's";
+          if (got != FeatureKind::Edge || index != ref) {
+            j.broken("each point naming " + owner + " face " + std::to_string(ref) +
+                         " (of two faces parallel to the bit, the reference face is that of the kind first in "
+                         "the registry)",
+                     "point " + std::to_string(k) + " names " + owner + " " +
+                         (got == FeatureKind::Edge ? "edge " : "vertex ") + std::to_string(index));
             return;
           }
         }
@@ -717,7 +724,16 @@ Verdict resting_of(const PairIn<T>& in) {
 
 template <Scalar T>
 Verdict manifold_resting(const Shape<T>& a, const Shape<T>& b) {
-  return resting_of(PairIn<T>{a, b, {}, {}});
+  // Both orders: the suite draws pairs in registry order, and the reference face of tied faces
+  // is chosen by that order.
+  Verdict v = resting_of(PairIn<T>{a, b, {}, {}});
+  if (!v.ok) return v;
+  Verdict w = resting_of(PairIn<T>{b, a, {}, {}});
+  if (!w.ok) {
+    w.account = "in the order (b, a): " + w.account;
+    return w;
+  }
+  return v;
 }
 template <Scalar T>
 Verdict manifold_separation(const Shape<T>& a, const Shape<T>& b) {

@@ -203,8 +203,8 @@ template <class A, class B, class Search>
   const auto axis = [&](Calc stop_below) { return search(tie, stop_below); };
   const auto contact_on = [&](const Axis& found) { return contact_from_axis(p, q, found, speculative, np, nq); };
   const Axis ax = polygon ? axis(radii - band) : Axis{};
-  const Calc core_depth = ax.depth - radii;  // within 2 ties of the cores' least penetration
-  const bool deep = polygon && core_depth > band + 2 * tie;
+  const Calc core_depth = ax.depth - radii;  // within 2 ties and the slack of the cores' least penetration
+  const bool deep = polygon && core_depth > band + 2 * tie + ax.slack;
   if (deep || (!(polygon && core_depth < -band) && cores_intersect(p, q))) {
     if (!(deep || radii > band || decide_exactly(a, b))) return speculative_or_none();
     return contact_on(polygon ? ax : axis(-std::numeric_limits<Calc>::infinity()));
@@ -231,17 +231,17 @@ template <class A, class B, class Search>
 /// contact_of_cores() with the least-penetration axis over both cores' faces (least_penetration_with()).
 template <class A, class B>
 std::optional<CoreContact> contact_of_cores(const A& a, const B& b, const Core& p, const Vec2c* np, const Core& q,
-                                            const Vec2c* nq, Calc points, Calc speculative) {
+                                            const Vec2c* nq, Calc points, Calc speculative, Rounding rounding) {
   return contact_of_cores(a, b, p, np, q, nq, points, speculative, [&](Calc tie, Calc stop_below) {
-    return least_penetration_with(p, faces_of(p, np), q, faces_of(q, nq), tie, stop_below);
+    return least_penetration_with(p, faces_of(p, np), q, faces_of(q, nq), tie, stop_below, rounding);
   });
 }
 
 /// The contact of two primitives without a specialisation (contact_of_cores() on their cores).
 template <class A, class B>
-std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative) {
+std::optional<CoreContact> contact_generic(const A& a, const B& b, Calc speculative, Rounding rounding = {}) {
   const Core p = core_of(a), q = core_of(b);
-  return contact_of_cores(a, b, p, nullptr, q, nullptr, point_scale(p, q), speculative);
+  return contact_of_cores(a, b, p, nullptr, q, nullptr, point_scale(p, q), speculative, rounding);
 }
 
 /// The separation of circles of radii ra and rb whose centres are dist apart: negative when they
@@ -323,7 +323,7 @@ template <Scalar T>
   return contact_circles_in_general(a, b, sign, speculative);
 }
 template <Scalar T>
-std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative) {
+std::optional<CoreContact> contact_pair(const Circle<T>& a, const Circle<T>& b, Calc speculative, Rounding = {}) {
   const Vec2c d = widen(b.center()) - widen(a.center());
   // The filter is proven at every scale: a pair it finds apart needs nothing else.
   const int sign = filtered_sign_dist2(d.x(), d.y(), Calc(a.radius()) + Calc(b.radius()));
@@ -811,7 +811,8 @@ inline constexpr bool is_box_v = std::is_same_v<S, Aabb<scalar_of_t<S>>> || std:
 /// half-lengths X = h_x |w|, Y = h_y |w|, a box's half-width is X |u . n| + Y |v . n|: six dot
 /// products in all, where the supports take one per corner and face.
 template <class A, class B>
-Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hull& hb, Calc tie, Calc stop_below) {
+Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hull& hb, Calc tie, Calc stop_below,
+                                Rounding rounding) {
   const Rect ka = rect_of(a), kb = rect_of(b);
   const Vec2c ua = ha.normals()[1], ub = hb.normals()[1];  // faces 0..3: -v, u, v, -u (hull_of)
   const auto [xa, ya] = half_lengths(ka, ua);
@@ -826,7 +827,7 @@ Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hu
   const std::array<Calc, 4> dq{wvb + ovb, wub - oub, wvb - ovb, wub + oub};
   return least_penetration_by(
       faces_of(ha), faces_of(hb), [&](const Vec2c&, unsigned i) { return dp[i]; },
-      [&](const Vec2c&, unsigned i) { return dq[i]; }, Calc(0), tie, stop_below);
+      [&](const Vec2c&, unsigned i) { return dq[i]; }, Calc(0), tie, stop_below, rounding);
 }
 
 /// The least-penetration axis of a box (shape a, hull hb) and a polygon (hull hp): the box's
@@ -835,7 +836,8 @@ Axis least_penetration_of_boxes(const A& a, const B& b, const Hull& ha, const Hu
 /// -c . n + h_x |w| |u . n| + h_y |w| |v . n| (in closed form, as least_penetration_of_boxes()
 /// takes it).
 template <class A>
-Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp, Calc tie, Calc stop_below) {
+Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp, Calc tie, Calc stop_below,
+                                      Rounding rounding) {
   const Core &p = hb.core, &q = hp.core;
   const Calc r = p.radius + q.radius;
   const Vec2c* nb = hb.normals();  // faces 0..3: -v, u, v, -u (hull_of)
@@ -857,30 +859,31 @@ Axis least_penetration_of_box_polygon(const A& a, const Hull& hb, const Hull& hp
       [&](const Vec2c& m, unsigned i) {
         return (q[i] - k.c).dot(m) + half.x * std::fabs(u.dot(m)) + half.y * std::fabs(v.dot(m)) + r;
       },
-      r, tie, stop_below);
+      r, tie, stop_below, rounding);
 }
 
 /// Two boxes or polygons: the least-penetration axis over both hulls' faces decides when it is
 /// clear of the band (all faces deeper: overlapping; one face apart: separated), and its face is
-/// the reference face of the contact. Its depth is within 2 ties of the least, so overlapping is
-/// certain above the band plus 2 ties. Boxes flat on an axis or thinner than their rounding, polygons of more than 8
-/// vertices and tiny pairs take the generic path. Kept out of line, so that apart_by_boxes() before it inlines into the
-/// caller.
+/// the reference face of the contact. Its depth is within 2 ties and its slack of the least, so
+/// overlapping is certain above the band plus those. Boxes flat on an axis or thinner than their rounding, polygons of
+/// more than 8 vertices and tiny pairs take the generic path. Kept out of line, so that apart_by_boxes() before it
+/// inlines into the caller.
 template <class A, class B>
-[[gnu::noinline]] std::optional<CoreContact> contact_hulls(const A& a, const B& b, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_hulls(const A& a, const B& b, Calc speculative,
+                                                           Rounding rounding) {
   Hull ha, hb;
   if (!(hull_of(a, ha) && hull_of(b, hb) && std::max(ha.scale, hb.scale) >= kTinyCore))
-    return contact_generic(a, b, speculative);
+    return contact_generic(a, b, speculative, rounding);
   const Calc scale = std::max(ha.scale, hb.scale), band = band_of(scale), tie = tie_of(scale);
   Axis ax;
   if constexpr (is_box_v<A> && is_box_v<B>) {
-    ax = least_penetration_of_boxes(a, b, ha, hb, tie, -band);
+    ax = least_penetration_of_boxes(a, b, ha, hb, tie, -band, rounding);
   } else if constexpr (is_box_v<A>) {
-    ax = least_penetration_of_box_polygon(a, ha, hb, tie, -band);
+    ax = least_penetration_of_box_polygon(a, ha, hb, tie, -band, rounding);
   } else {
-    ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band);
+    ax = least_penetration_with(ha.core, faces_of(ha), hb.core, faces_of(hb), tie, -band, rounding);
   }
-  const bool overlapping = ax.depth > band + 2 * tie || (!(ax.depth < -band) && decide_exactly(a, b));
+  const bool overlapping = ax.depth > band + 2 * tie + ax.slack || (!(ax.depth < -band) && decide_exactly(a, b));
   if (overlapping) return contact_from_axis(ha.core, hb.core, ax, speculative, ha.normals(), hb.normals());
   return speculative > 0 ? speculative_contact_cores(ha.core, hb.core, speculative) : std::nullopt;
 }
@@ -898,7 +901,8 @@ inline constexpr bool is_hull_kind_v =
 /// dots. The box's four faces share four dots of the ends; the capsule's two sides, one box
 /// half-width.
 template <class A>
-Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc, Calc tie, Calc stop_below) {
+Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc, Calc tie, Calc stop_below,
+                                      Rounding rounding) {
   const Rect k = rect_of(a);
   const Vec2c u = ha.normals()[1], v = perp(u);  // faces 0..3: -v, u, v, -u (hull_of)
   const auto [x, y] = half_lengths(k, u);
@@ -913,13 +917,14 @@ Axis least_penetration_of_box_capsule(const A& a, const Hull& ha, const Hull& hc
   const std::array<Calc, 2> dq{ext - cn + e0.dot(n) + r, ext + cn - e1.dot(n) + r};
   return least_penetration_by(
       faces_of(ha), faces_of(hc), [&](const Vec2c&, unsigned i) { return dp[i]; },
-      [&](const Vec2c&, unsigned i) { return dq[i]; }, r, tie, stop_below);
+      [&](const Vec2c&, unsigned i) { return dq[i]; }, r, tie, stop_below, rounding);
 }
 
 /// The least-penetration axis of a capsule (hull hc) and a polygon (hull hp), as
 /// least_penetration_with() finds it, bit for bit: the capsule's two sides, n and -n, take the
 /// least and the largest of one pass of the polygon's vertices along n instead of two.
-inline Axis least_penetration_of_capsule_polygon(const Hull& hc, const Hull& hp, Calc tie, Calc stop_below) {
+inline Axis least_penetration_of_capsule_polygon(const Hull& hc, const Hull& hp, Calc tie, Calc stop_below,
+                                                 Rounding rounding) {
   const Core &p = hc.core, &q = hp.core;
   const Calc r = p.radius + q.radius;
   const Vec2c n = hc.normals()[0];  // side 1's is -n
@@ -932,32 +937,42 @@ inline Axis least_penetration_of_capsule_polygon(const Hull& hc, const Hull& hp,
   const std::array<Calc, 2> dp{p[0].dot(n) - lo + r, p[1].dot(hc.normals()[1]) + hi + r};
   return least_penetration_by(
       faces_of(hc), faces_of(hp), [&](const Vec2c&, unsigned i) { return dp[i]; },
-      [&](const Vec2c& m, unsigned i) { return q[i].dot(m) + support(p, -m) + r; }, r, tie, stop_below);
+      [&](const Vec2c& m, unsigned i) { return q[i].dot(m) + support(p, -m) + r; }, r, tie, stop_below, rounding);
 }
 
 /// A capsule and a box or polygon: contact_of_cores() with the faces' normals known (the
 /// capsule's sides by one square root, the box's from its axes, the polygon's cached). Kept out of
 /// line, as the other specialised pairs are: the dispatch inlines into the caller.
 template <class A, class B>
-[[gnu::noinline]] std::optional<CoreContact> contact_capsule_hull(const A& a, const B& b, Calc speculative) {
+[[gnu::noinline]] std::optional<CoreContact> contact_capsule_hull(const A& a, const B& b, Calc speculative,
+                                                                  Rounding rounding) {
   Hull ha, hb;
-  if (!(hull_of(a, ha) && hull_of(b, hb))) return contact_generic(a, b, speculative);
+  if (!(hull_of(a, ha) && hull_of(b, hb))) return contact_generic(a, b, speculative, rounding);
   const Calc points = std::max(ha.scale, hb.scale);
   if constexpr (is_box_v<A>) {
-    return contact_of_cores(
-        a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
-        [&](Calc tie, Calc stop_below) { return least_penetration_of_box_capsule(a, ha, hb, tie, stop_below); });
+    return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
+                            [&](Calc tie, Calc stop_below) {
+                              return least_penetration_of_box_capsule(a, ha, hb, tie, stop_below, rounding);
+                            });
   } else {
-    return contact_of_cores(
-        a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
-        [&](Calc tie, Calc stop_below) { return least_penetration_of_capsule_polygon(ha, hb, tie, stop_below); });
+    return contact_of_cores(a, b, ha.core, ha.normals(), hb.core, hb.normals(), points, speculative,
+                            [&](Calc tie, Calc stop_below) {
+                              return least_penetration_of_capsule_polygon(ha, hb, tie, stop_below, rounding);
+                            });
   }
 }
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
 /// they overlap, or, with speculative > 0, when they are apart by at most speculative (rounded).
+/// rounding: how far the shapes' values may lie from the shapes they stand for (empty for stored
+/// shapes; for images, image_rounding() of both). An image's points carry the rounding of its
+/// stored magnitude and position, which may be far larger than the image's own scale, so two faces
+/// equally deep in the exact images may differ in the computed ones by more than the tie of their
+/// scale; within that rounding the first core's face stays the reference (feature.hpp,
+/// least_penetration_by()), and the depth found is within it of the images' least, inside the
+/// transformed contract.
 template <class A, class B>
-std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative) {
+std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative, Rounding rounding = {}) {
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
   if constexpr ((circle_a || is_hull_kind_v<A>)&&is_hull_kind_v<B>) {
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
@@ -981,14 +996,14 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
       }
     } else {
       if (apart_by_boxes(a, b, speculative)) return std::nullopt;
-      return contact_hulls(a, b, speculative);
+      return contact_hulls(a, b, speculative, rounding);
     }
   } else if constexpr (circle_a && is_capsule_v<B>) {
     return contact_circle_capsule(a, b, speculative);
   } else if constexpr ((is_capsule_v<A> && is_hull_kind_v<B>) || (is_hull_kind_v<A> && is_capsule_v<B>)) {
-    return contact_capsule_hull(a, b, speculative);
+    return contact_capsule_hull(a, b, speculative, rounding);
   }
-  return contact_generic(a, b, speculative);
+  return contact_generic(a, b, speculative, rounding);
 }
 
 }  // namespace collide::detail

@@ -453,6 +453,25 @@ struct Axis {
   Calc depth = 0;              ///< translation along -normal that separates, radius included
   int owner = -1;              ///< 0: a face of the first core, 1: of the second, -1: none
   unsigned face = 0;
+  Calc slack = 0;  ///< the rounding within which the first core's face was kept (least_penetration_by())
+};
+
+/// How far the shapes' values may lie from the shapes they stand for, computed only when asked:
+/// when a face of the second core would take over from a parallel face of the first
+/// (least_penetration_by()).
+/// Empty, it is 0: stored shapes are what they stand for. It refers to its function object,
+/// which must outlive it (it is made and passed down within one call).
+class Rounding {
+ public:
+  Rounding() = default;
+  template <class F>
+  explicit Rounding(const F& f) noexcept
+      : fn_([](const void* c) { return Calc((*static_cast<const F*>(c))()); }), ctx_(&f) {}
+  Calc operator()() const { return fn_ ? fn_(ctx_) : Calc(0); }
+
+ private:
+  Calc (*fn_)(const void*) = nullptr;
+  const void* ctx_ = nullptr;
 };
 
 /// Axis of least penetration among the faces of two cores, each core's faces listed by faces_p / faces_q (called
@@ -463,9 +482,14 @@ struct Axis {
 /// order while the pair moves, and the depth found is within 2 tie of the least. Stops at the first face
 /// shallower than `stop_below` and returns it (a separating face, when the caller needs only that). r: the
 /// cores' radii, the depth of the answer when neither core has a face (two points).
+/// rounding: for images, whose values carry the rounding of their stored magnitude and position (far larger than
+/// their own scale for a shape stored far from its local origin), two parallel faces equally deep in the exact
+/// shapes may differ by more than the tie. A face of q parallel to p's best (kParallelFaceCosine) and shallower by
+/// more than the tie takes over only when shallower by more than tie + rounding() as well; else p's face is kept,
+/// with that rounding as the answer's slack, and the depth found is within 2 tie + slack of the least.
 template <class FacesP, class FacesQ, class DepthP, class DepthQ>
 Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, DepthQ&& depth_q, Calc r, Calc tie,
-                          Calc stop_below) {
+                          Calc stop_below, Rounding rounding = {}) {
   Axis best, best_q;
   best.depth = best_q.depth = std::numeric_limits<Calc>::infinity();
   bool stop = false;
@@ -482,7 +506,16 @@ Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, 
     stop = d < stop_below;
     if (d < best_q.depth - tie || stop) best_q = {Vec2c(-n), d, 1, i};
   });
-  if (best_q.depth < best.depth - tie || stop) best = best_q;
+  if (stop || (best_q.depth < best.depth - tie && best.owner < 0)) {
+    best = best_q;
+  } else if (best_q.depth < best.depth - tie) {
+    const Calc slack = best_q.normal.dot(best.normal) > kParallelFaceCosine ? rounding() : Calc(0);
+    if (best_q.depth < best.depth - tie - slack) {
+      best = best_q;
+    } else {
+      best.slack = slack;
+    }
+  }
   if (best.owner < 0) best = {Vec2c(1, 0), r, -1, 0};  // two points: any direction will do
   return best;
 }
@@ -491,12 +524,12 @@ Axis least_penetration_by(FacesP&& faces_p, FacesQ&& faces_q, DepthP&& depth_p, 
 /// core's extreme along it, up to rounding), and the other core's support (Minkowski-difference
 /// faces).
 template <class FacesP, class FacesQ>
-Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie,
-                            Calc stop_below) {
+Axis least_penetration_with(const Core& p, FacesP&& faces_p, const Core& q, FacesQ&& faces_q, Calc tie, Calc stop_below,
+                            Rounding rounding = {}) {
   const Calc r = p.radius + q.radius;
   return least_penetration_by(
       faces_p, faces_q, [&](const Vec2c& n, unsigned i) { return p[i].dot(n) + support(q, -n) + r; },
-      [&](const Vec2c& n, unsigned i) { return q[i].dot(n) + support(p, -n) + r; }, r, tie, stop_below);
+      [&](const Vec2c& n, unsigned i) { return q[i].dot(n) + support(p, -n) + r; }, r, tie, stop_below, rounding);
 }
 
 /// least_penetration_with() over the faces of the cores' own edges (for_each_face).

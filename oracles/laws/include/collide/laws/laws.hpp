@@ -329,11 +329,12 @@ Verdict manifold_ids(const Shape<T>& a, const Shape<T>& b);
 /// cores' distance across them (0 when the cores meet) plus 64 bounds, the contact has two points,
 /// at the stretch's two ends within 4 bounds along the faces (a box resting on a box or a capsule
 /// lying on a face does not rock on one point). Where the faces' directions are parallel to the
-/// bit (their cross product 0), both points name a's face as the reference face (kind Edge, its
-/// index), as feature.hpp rules for faces equally deep. A shorter stretch may give one point:
-/// across a gap longer than the faces, the normal follows the closest points (contact_cores.hpp,
-/// closest_normal). Compounds are not judged. bound: as manifold_separation's at the contact's
-/// depth.
+/// bit (their cross product 0), both points name the reference face (kind Edge, its index) of
+/// the shape whose kind comes first in the registry, a's for two of one kind, as feature.hpp rules
+/// for faces equally deep. A shorter stretch may give one point: across a gap longer than the
+/// faces, the normal follows the closest points (contact_cores.hpp, closest_normal). Judged in
+/// both orders, (a, b) and (b, a). Compounds are not judged. bound: as manifold_separation's at the
+/// contact's depth.
 template <Scalar T>
 Verdict manifold_resting(const Shape<T>& a, const Shape<T>& b);
 
