@@ -748,5 +748,27 @@ TYPED_TEST(Manifolds, CompoundIdsNameTheChildren) {
   EXPECT_EQ(c->ids[0].index_b, 1);  // the box's right face
 }
 
+/// A polygon 3 long and 10^-245 thick, turned 45 degrees, and a circle of radius 3 whose centre
+/// lies 2.715 off its line: the closest-point search named the sliver's far side, whose outward
+/// normal points away from the centre, and its normal gave a depth of r + 2.715 with the normal
+/// reversed. The depth is r less the centre's distance to the line y = x, and the normal points
+/// from the centre toward the polygon.
+TEST(ManifoldRegression, CircleBesideASliverFacesItsNearSide) {
+  using V = Vec2<double>;
+  const Circle<double> circle = *Circle<double>::make(V(-0x1.046bb2c88d37p+0, -0x1.693fe507c3863p+1), 3);
+  const Transform<double> xa = *Transform<double>::make_with_rotation(V(0x1p-1011, 0), V(0, 1));
+  const ConvexPolygon<double> sliver = *ConvexPolygon<double>::make(
+      {V(3, 0x1.d0d0d0d16a1b2p-815), V(0x1.d0d0d0d0d0d0dp-815, 0x1.d0d0d0d0d0d12p-815),
+       V(0x1.d0d0d0d0d0d0dp-815, 0x1.d0d0d0d0d0d0dp-815), V(0x1.7fffe7fffffffp+1, 0x1.d0d0d0d16a1b1p-815)});
+  const Transform<double> xb = *Transform<double>::make_with_rotation(V(0x1.d0d0d0d0d0d0dp-815, 0x1.d0d0d0d0d0d0dp-815),
+                                                                      V(0x1.6a09e667f3bccp-1, 0x1.6a09e667f3bccp-1));
+  const std::optional<Contact<double>> c = contact(circle, xa, sliver, xb);
+  ASSERT_TRUE(c);
+  const V centre = xa.apply(circle.center());
+  const double off_line = (centre.x() - centre.y()) / std::sqrt(2.0);
+  EXPECT_NEAR(c->depth, 3 - off_line, 1e-12);
+  EXPECT_LT(c->normal.dot(V(centre.x() - centre.y(), centre.y() - centre.x())), 0) << "normal away from the polygon";
+}
+
 }  // namespace
 }  // namespace collide::test

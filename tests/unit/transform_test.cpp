@@ -380,6 +380,36 @@ TEST(TransformRegression, FacesEquallyDeepInPlacedImagesKeepAsFaceAsTheReference
   }
 }
 
+/// A float compound of a circle and an AABB, each with a child transform, placed by the rotation
+/// (0, 0.99999994), whose squared length is within float's 4 eps of 1 and is stored as given: it
+/// scales positions by |q| but not the circle's radius. The compound's world box was the image of
+/// its local box, scaled with it, and fell 1.5 10^-8 short of the circle's image at the top. A
+/// failure names the side of the box that misses the circle.
+TEST(TransformRegression, PlacedCompoundBoxUnderARotationStoredAsGivenHoldsItsCircle) {
+  using V = Vec2<float>;
+  const Circle<float> circle = *Circle<float>::make(V(-0x1.d5efa2p-1f, -0x1.f1252ap-1f), 0.5f);
+  const Transform<float> tc =
+      *Transform<float>::make_with_rotation(V(-0x1.6af7ccp+0f, -0x1.f1252ap-1f), V(0x1p-148f, 1));
+  const Aabb<float> box = *Aabb<float>::make(V(-0x1.6af7dp+0f, -0x1.789294p+0f), V(-0x1.abdf44p-2f, -0x1.e24a54p-2f));
+  const Transform<float> tb = *Transform<float>::make_with_rotation(V(-0x1.abdf44p-2f, -0x1.f1252ap-1f), V(0, -1));
+  const Compound<float> body =
+      *Compound<float>::make_placed({{Primitive<float>(circle), tc}, {Primitive<float>(box), tb}});
+  const Transform<float> x = *Transform<float>::make_with_rotation(V(0x1p-149f, 0x1.7ep-142f), V(0, 0x1.fffffep-1f));
+  ASSERT_EQ(x.rotation().y(), 0x1.fffffep-1f);  // stored as given
+  // The circle's exact image centre, in double (each product and sum exact up to 10^-16).
+  const Vec2c local = Vec2c(0x1p-148 * double(circle.center().x()) - double(circle.center().y()),
+                            double(circle.center().x()) + 0x1p-148 * double(circle.center().y())) +
+                      widen(tc.position());
+  const Vec2c centre(-double(x.rotation().y()) * local.y() + double(x.position().x()),
+                     double(x.rotation().y()) * local.x() + double(x.position().y()));
+  for (const Aabb<float>& b : {bounds(Shape<float>(body), x), bounds(body, x)}) {
+    EXPECT_LE(double(b.min().x()), centre.x() - 0.5 + 1e-12) << "left";
+    EXPECT_GE(double(b.max().x()), centre.x() + 0.5 - 1e-12) << "right";
+    EXPECT_LE(double(b.min().y()), centre.y() - 0.5 + 1e-12) << "bottom";
+    EXPECT_GE(double(b.max().y()), centre.y() + 0.5 - 1e-12) << "top";
+  }
+}
+
 // A circle against a polygon turned by a general rotation is computed in the polygon's frame
 // (detail/contact_local.hpp), not on the images. Its answer must be the images' answer: present
 // exactly when the imaged pair's contact is (both are exact on the computed images), the same

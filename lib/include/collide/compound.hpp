@@ -259,11 +259,15 @@ struct PlacedCompound {
   Aabb<Calc> box;               ///< conservative world box (the local box's image, padded)
 };
 
-/// The compound under x with its world box.
+/// The compound under x with its world box: the image of its local box, padded. A rotation
+/// stored as given scales positions by |q| but not radii and half extents, so the image of the
+/// local box falls short of the children's images by up to ||q| - 1| L <= |q^2 - 1| L (plus the
+/// rounding of q^2); that is padded too.
 template <Scalar T>
 PlacedCompound<T> placed(const Compound<T>& c, const Pose& x) {
   const Aabb<T>& b = c.bounds();
-  const Calc tol = image_tolerance(x, c.local_extent());
+  const Calc local = c.local_extent();
+  const Calc tol = image_tolerance(x, local) + (std::fabs(x.q.squaredNorm() - 1) + 4 * kUnitRoundoff) * local;
   const Aabb<Calc> box = placed_bounds<Calc>(ShapeAccess::aabb<Calc>(widen(b.min()), widen(b.max())), x, tol);
   return PlacedCompound<T>{&c, x, box};
 }

@@ -459,14 +459,16 @@ bool projects_beyond_face(const ConvexPolygon<T>& b, const Vec2c& c, unsigned fa
 /// A circle's contact from its centre c (radius r), the closest point on_q of the other shape, at
 /// distance dist > 0, and the feature there, with face normal n_face (outward, unit) when that
 /// feature is a face: inside a face its normal (see closest_normal()), at a vertex the direction
-/// to it; one point midway.
+/// to it; one point midway. A face the centre lies behind (a sliver's far side, as close as its
+/// near side up to rounding) has no normal toward the centre: the direction to the point is taken.
 inline CoreContact circle_contact_from_closest(const Vec2c& c, Calc r, const Vec2c& on_q, Calc dist,
                                                const CoreFeature& feature, const Vec2c& n_face) noexcept {
   CoreContact out;
   out.count = 1;
   const Vec2c dq = on_q - c;
-  out.normal = feature.edge ? Vec2c(-n_face) : direction_of(dq, dist);
-  const Calc along = feature.edge ? dq.dot(out.normal) : dist;
+  const bool facing = feature.edge && dq.dot(n_face) < 0;
+  out.normal = facing ? Vec2c(-n_face) : direction_of(dq, dist);
+  const Calc along = facing ? dq.dot(out.normal) : dist;
   out.depth = std::max(Calc(0), r - along);
   out.points[0] = ((c + out.normal * r) + on_q) * 0.5;
   store_separations(out.separations, along - r, 0);
