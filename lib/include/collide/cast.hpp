@@ -40,7 +40,7 @@
 /// No allocation for shapes of at most 8 vertices (a compound's children are imaged one at a
 /// time, never copied).
 ///
-/// Method: conservative advancement on the dilated cores (detail/core.hpp). Along any unit axis n
+/// Method: conservative advancement on the dilated cores (detail/convex_core.hpp). Along any unit axis n
 /// the separation is at most the gap and falls no faster than the closing speed n . w (plus its
 /// rounding), so the time it takes to fall to target is a safe step, and the largest over all
 /// axes is taken. Face normals do not turn under translation, so the faces of both cores bound
@@ -58,8 +58,9 @@
 
 #include "collide/compound.hpp"
 #include "collide/detail/advance.hpp"
-#include "collide/detail/core.hpp"
-#include "collide/queries.hpp"
+#include "collide/detail/convex_core.hpp"
+#include "collide/overlaps.hpp"
+#include "collide/tolerances.hpp"
 #include "collide/shape_traits.hpp"
 #include "collide/transform.hpp"
 #include "collide/transformed.hpp"

@@ -128,7 +128,7 @@ inline constexpr Calc kParallelFaceCosine = 0.998;
 inline constexpr Calc kAbsoluteFloor = 0x1p-500;
 
 /// Relative factor of the error unit of rounded outputs (depths, normals, distances), in units
-/// of double's unit roundoff (2^-53). See rounding_tolerance() in queries.hpp; overlap decisions
+/// of double's unit roundoff (2^-53). See rounding_tolerance() in tolerances.hpp; overlap decisions
 /// are exact and have no tolerance.
 inline constexpr Calc kOverlapErrorFactor = 64.0;
 

@@ -3,7 +3,7 @@
 /// Feature ids of contact points: which vertex or edge of each shape produced a point, so that a
 /// physics solver can match the points of one frame to those of the next (warm starting).
 ///
-/// Numbering, per shape (its convex core; see detail/core.hpp):
+/// Numbering, per shape (its convex core; see detail/convex_core.hpp):
 /// - Circle: vertex 0 is the centre.
 /// - Capsule: vertex 0 is a(), vertex 1 is b(); edge 0 is the side whose outward normal is
 ///   (d.y, -d.x) with d = b() - a() (the right-hand side going from a to b), edge 1 the other side.

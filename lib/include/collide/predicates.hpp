@@ -4,6 +4,7 @@
 /// exact decisions (a filter with a running error bound, exact binary arithmetic).
 
 #include "collide/config.hpp"
+#include "collide/detail/math.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,11 +19,6 @@
 namespace collide {
 
 namespace detail {
-
-/// The index after i in a cycle of n: a compare, where i % n would divide.
-constexpr std::size_t next_index(std::size_t i, std::size_t n) noexcept {
-  return i + 1 < n ? i + 1 : 0;
-}
 
 struct Term {
   double hi;
@@ -334,37 +330,6 @@ inline int orient(const Vec2c& a, const Vec2c& b, const Vec2c& c) noexcept {
     if (-det > bound) return -1;
   }
   return detail::orient_beyond_filter(a, b, c);
-}
-
-/// 2D cross product (z component), computed in Calc.
-inline Calc cross(const Vec2c& a, const Vec2c& b) noexcept {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-#if defined(__SSE2__)
-/// The vector in an SSE2 register (the store and the caller's loads become register moves).
-inline Vec2c vec_of(__m128d r) noexcept {
-  Vec2c out;
-  _mm_storeu_pd(out.data(), r);
-  return out;
-}
-#endif
-
-/// Left perpendicular (rotated +90 degrees).
-inline Vec2c perp(const Vec2c& v) noexcept {
-#if defined(__SSE2__)
-  // One shuffle and a sign flip: built from two scalars, the vector went through the stack.
-  const __m128d p = _mm_loadu_pd(v.data());
-  return vec_of(_mm_xor_pd(_mm_shuffle_pd(p, p, 1), _mm_set_pd(0.0, -0.0)));
-#else
-  return {-v.y(), v.x()};
-#endif
-}
-
-/// Exact widening of a stored vector into the computation type.
-template <Scalar T>
-inline Vec2c widen(const Vec2<T>& v) noexcept {
-  return v.template cast<Calc>();
 }
 
 }  // namespace collide

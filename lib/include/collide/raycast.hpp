@@ -22,9 +22,11 @@
 /// (origin inside) is exact. Normals are rounded unit vectors.
 
 #include "collide/compound.hpp"
-#include "collide/contains.hpp"
-#include "collide/detail/core.hpp"
-#include "collide/queries.hpp"
+#include "collide/detail/contains_point.hpp"
+#include "collide/detail/convex_core.hpp"
+#include "collide/ray.hpp"
+#include "collide/shape_traits.hpp"
+#include "collide/tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,21 +35,6 @@
 #include <variant>
 
 namespace collide {
-
-/// A ray: origin + t * direction, t >= 0. direction need not be normalised.
-template <Scalar T>
-struct Ray {
-  Vec2<T> origin;     ///< where the ray starts (t = 0)
-  Vec2<T> direction;  ///< the ray's step per unit of t; any length, (0, 0) only tests the origin
-};
-
-/// Where a ray first meets a shape.
-template <Scalar T>
-struct RayHit {
-  T t;             ///< ray parameter, in units of |direction|; 0 <= t <= max_t
-  Vec2<T> point;   ///< origin + t * direction (rounded)
-  Vec2<T> normal;  ///< unit outward normal of the shape at point; -direction/|direction| when t = 0
-};
 
 namespace detail {
 

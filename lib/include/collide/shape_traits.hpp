@@ -122,7 +122,7 @@ void visit_child(const Compound<T>& c, std::size_t i, const Pose& body, F&& f) {
   std::visit([&](const auto& p) { with_image(p, x, f); }, c.children()[i]);
 }
 
-/// name_stored_features() (image.hpp) for the child of compound c that one side of `contact`
+/// name_stored_features() (detail/image.hpp) for the child of compound c that one side of `contact`
 /// names, when it is a polygon imaged under `body` composed with its own transform: a contact's
 /// points all come from one child pair.
 template <Scalar T, class C>

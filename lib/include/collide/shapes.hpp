@@ -83,28 +83,6 @@ inline std::optional<Vec2c> normalized(const Vec2c& v) noexcept {
   return Vec2c(w / std::hypot(w.x(), w.y()));
 }
 
-/// sqrt(x) for x >= 0, the same correctly rounded value, by the instruction alone: std::sqrt also
-/// checks for a negative x to set errno, through a library call that gives its caller a stack
-/// frame.
-[[gnu::always_inline]] inline Calc square_root(Calc x) noexcept {
-#if defined(__SSE2__)
-  return _mm_cvtsd_f64(_mm_sqrt_sd(_mm_setzero_pd(), _mm_set_sd(x)));
-#else
-  return std::sqrt(x);
-#endif
-}
-
-/// 1 / sqrt(ww) for the squared length ww of a stored rotation (within a few roundings of T of
-/// 1): for |ww - 1| <= 2^-18 by its series about 1 to the second order (the rest is below
-/// 2^-55, so the value is within about one rounding of double, as the square root and division
-/// are), without their latency; otherwise by them. Exactly 1 for ww = 1 (quarter turns).
-inline Calc inverse_norm_near_unit(Calc ww) noexcept {
-  const Calc e = ww - 1;  // exact near 1
-  if (std::fabs(e) <= 0x1p-18) [[likely]]
-    return 1 + e * (Calc(0.375) * e - Calc(0.5));
-  return 1 / square_root(ww);
-}
-
 /// The unit outward normal of a counter-clockwise polygon's edge from a to b, computed in double
 /// (one square root; an edge whose squared length would underflow or overflow is scaled first).
 inline Vec2c edge_normal(const Vec2c& a, const Vec2c& b) noexcept {
@@ -599,6 +577,52 @@ struct PolygonAccess {
   template <Scalar T>
   static Calc turn_margin(const ConvexPolygon<T>& s) noexcept {
     return s.turn_margin_;
+  }
+};
+
+/// Builds shapes from values already known valid (images, exact widenings).
+struct ShapeAccess {
+  template <Scalar T>
+  static Circle<T> circle(const Vec2<T>& c, T r) noexcept {
+    return Circle<T>(Unchecked{}, c, r);
+  }
+  template <Scalar T>
+  static Aabb<T> aabb(const Vec2<T>& lo, const Vec2<T>& hi) noexcept {
+    return Aabb<T>(Unchecked{}, lo, hi);
+  }
+  template <Scalar T>
+  static Obb<T> obb(const Vec2<T>& c, const Vec2<T>& h, const Vec2<T>& u) noexcept {
+    return Obb<T>(Unchecked{}, c, h, u);
+  }
+  template <Scalar T>
+  static Capsule<T> capsule(const Vec2<T>& a, const Vec2<T>& b, T r) noexcept {
+    return Capsule<T>(Unchecked{}, a, b, r);
+  }
+  /// A polygon of n >= 1 vertices, vertex k = at(k) (called once for each k, in order), with its
+  /// box; allocates only beyond kInline vertices.
+  template <Scalar T, class At>
+  static ConvexPolygon<T> polygon(std::size_t n, At&& at) {
+    ConvexPolygon<T> poly;
+    poly.size_ = n;
+    if (n > ConvexPolygon<T>::kInline) poly.heap_.resize(n);
+    Vec2<T>* out = n > ConvexPolygon<T>::kInline ? poly.heap_.data() : poly.inline_.data();
+    Vec2<T> lo = at(0), hi = lo;
+    out[0] = lo;
+    for (std::size_t k = 1; k < n; ++k) {
+      const Vec2<T> v = at(k);
+      out[k] = v;
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    poly.lo_ = lo;
+    poly.hi_ = hi;
+    return poly;
+  }
+  /// Caches normal(k) as edge k's unit outward normal (a polygon of at most kInline vertices).
+  template <Scalar T, class Normal>
+  static void cache_normals(ConvexPolygon<T>& poly, Normal&& normal) noexcept {
+    for (std::size_t k = 0; k < poly.size_; ++k) poly.normals_[k] = normal(k);
+    poly.normals_cached_ = true;
   }
 };
 }  // namespace detail

@@ -55,8 +55,8 @@
 #include "collide/cast.hpp"
 #include "collide/compound.hpp"
 #include "collide/detail/advance.hpp"
-#include "collide/detail/core.hpp"
-#include "collide/queries.hpp"
+#include "collide/detail/convex_core.hpp"
+#include "collide/tolerances.hpp"
 #include "collide/shape_traits.hpp"
 
 #include <algorithm>

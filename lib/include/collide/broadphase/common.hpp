@@ -4,10 +4,9 @@
 /// box test, the ray-box test, the slot table that owns stored boxes and user data, and the
 /// pair list type.
 
-#include "collide/compound.hpp"
 #include "collide/config.hpp"
 #include "collide/error.hpp"
-#include "collide/raycast.hpp"
+#include "collide/ray.hpp"
 #include "collide/shapes.hpp"
 
 #include <algorithm>

@@ -8,7 +8,8 @@
 #include "collide/broadphase/events.hpp"
 #include "collide/broadphase/tree.hpp"
 #include "collide/contains.hpp"
-#include "collide/queries.hpp"
+#include "collide/contact.hpp"
+#include "collide/overlaps.hpp"
 #include "collide/raycast.hpp"
 #include "collide/registry.hpp"
 

@@ -7,7 +7,7 @@
 #include "collide/config.hpp"
 #include "collide/detail/contact_cores.hpp"
 #include "collide/detail/contact_pairs.hpp"
-#include "collide/detail/core.hpp"
+#include "collide/detail/convex_core.hpp"
 #include "collide/shape_traits.hpp"
 
 #include <algorithm>

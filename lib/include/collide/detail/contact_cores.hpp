@@ -1,7 +1,7 @@
 #pragma once
 /// @file detail/contact_cores.hpp
 /// Contact generation for two convex cores (a point, a segment or a convex polygon, each dilated
-/// by a radius: see detail/core.hpp) that are known to overlap, in named steps:
+/// by a radius: see detail/convex_core.hpp) that are known to overlap, in named steps:
 ///   1. contact_of_separate_cores: cores apart (only the radii meet): the closest points give the
 ///      normal; when they lie inside a face, the other core's facing side is clipped to it as in
 ///      steps 3 to 5 (a capsule resting on a box touches under both ends), else one point midway.
@@ -15,11 +15,11 @@
 /// Each point carries its feature id (feature.hpp) and its separation: the signed distance between
 /// the two surfaces along the normal at that point (negative when penetrating). A speculative
 /// distance keeps clipped points apart by up to it; speculative_contact_cores() is the contact of
-/// cores that do not overlap. Everything is computed in Calc (double); Contact<T> in queries.hpp
+/// cores that do not overlap. Everything is computed in Calc (double); Contact<T> in contact.hpp
 /// is the result rounded to T.
 
 #include "collide/config.hpp"
-#include "collide/detail/core.hpp"
+#include "collide/detail/convex_core.hpp"
 #include "collide/feature.hpp"
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 /// translations keep the image path, whose answers they keep exactly (the transform laws).
 
 #include "collide/detail/contact_pairs.hpp"
-#include "collide/image.hpp"
+#include "collide/detail/image.hpp"
 #include "collide/shapes.hpp"
 #include "collide/transform.hpp"
 

@@ -7,7 +7,7 @@
 ///
 /// Every law takes shapes as Shape<T>, T = float or double (explicitly instantiated in
 /// collide_laws). Decisions are exact for every pair (overlap_tolerance(a, b) is 0): the laws on
-/// overlaps() demand equality. "Tolerance" below is rounding_tolerance(a, b) from queries.hpp (the
+/// overlaps() demand equality. "Tolerance" below is rounding_tolerance(a, b) from tolerances.hpp (the
 /// error unit of rounded outputs) for depths, points and distances.
 
 #include "collide/collide.hpp"
