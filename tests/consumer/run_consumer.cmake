@@ -1,6 +1,7 @@
 # Script mode (cmake -P): builds and runs a separate consumer project the way a game would.
 # MODE find_package: install this build into a fresh prefix, check its pkg-config file, then
-#   configure tests/consumer/app against that prefix only, build and run it.
+#   configure tests/consumer/app against that prefix only, build and run it (collide::collide and
+#   collide::compiled).
 # MODE fetch_content: configure tests/consumer/fetch_app, which takes lib/ with FetchContent from
 #   this checkout, build and run it, install it and check that nothing of collide was installed.
 # Inputs: MODE, COLLIDE_BUILD_DIR, COLLIDE_SOURCE_DIR, WORK_DIR, APP_GENERATOR, APP_CXX_COMPILER,
@@ -49,6 +50,17 @@ if(MODE STREQUAL "find_package")
       "-DCMAKE_PREFIX_PATH=${prefix}" "-DCOLLIDE_EXPECTED_PREFIX=${prefix}")
   run_step("build the consumer app (strict warnings, collide's headers not system)" ${CMAKE_COMMAND} --build "${app_build}")
   run_step("run the consumer app" "${app_build}/collide_consumer")
+  run_step("run the consumer app on collide::compiled" "${app_build}/collide_consumer_compiled")
+  # The queries it calls come from the library: its own object defines no instantiation of them.
+  find_program(NM nm REQUIRED)
+  run_step("list the definitions of its object" ${NM} -C --defined-only
+    "${app_build}/CMakeFiles/collide_consumer_compiled.dir/compiled_main.cpp.o")
+  string(REGEX MATCHALL "collide::(overlaps|contact|distance|resolve|contains|raycast|bounds|shape_cast|time_of_impact)<std::variant<[^\n]*"
+         instantiated "${step_output}")
+  if(instantiated)
+    list(JOIN instantiated "\n  " text)
+    message(FATAL_ERROR "consumer: the object instantiates queries collide::compiled holds:\n  ${text}")
+  endif()
 elseif(MODE STREQUAL "fetch_content")
   run_step("configure the FetchContent consumer"
     ${CMAKE_COMMAND} -S "${COLLIDE_SOURCE_DIR}/tests/consumer/fetch_app" -B "${app_build}" ${configure_args}

@@ -2,6 +2,9 @@
 // Helpers shared by the laws' translation units (not installed).
 
 #include "collide/collide.hpp"
+// The queries on Shape<T> come compiled from collide::compiled (the same code at the same
+// optimisation level): each law unit then instantiates none of them again.
+#include "collide/compiled.hpp"
 #include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"
 #include "collide/laws/transform.hpp"

@@ -1,0 +1,37 @@
+# Script mode (cmake -P): fails when CASES_DIR holds a case file that has no ctest of its own.
+# A case file is a file named *.case or one whose first line starts with "collide-case" (the
+# format's header, whatever the file is named). REPLAYED: the names (file name less .case) that
+# have a test, as tests/regressions/CMakeLists.txt registered them.
+cmake_minimum_required(VERSION 3.20)
+foreach(var CASES_DIR REPLAYED)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "all_replayed.cmake: ${var} is not set")
+  endif()
+endforeach()
+
+file(GLOB entries LIST_DIRECTORIES false "${CASES_DIR}/*")
+set(unreplayed "")
+set(count 0)
+foreach(path IN LISTS entries)
+  get_filename_component(file ${path} NAME)
+  file(STRINGS ${path} first LIMIT_COUNT 1 LIMIT_INPUT 64)
+  if(NOT file MATCHES "\\.case$" AND NOT first MATCHES "^collide-case")
+    continue()
+  endif()
+  math(EXPR count "${count} + 1")
+  if(NOT file MATCHES "\\.case$")
+    list(APPEND unreplayed "${file} (a case file not named *.case)")
+    continue()
+  endif()
+  get_filename_component(name ${path} NAME_WLE)
+  if(NOT name IN_LIST REPLAYED)
+    list(APPEND unreplayed "${file} (added after the last build: build again to register it)")
+  endif()
+endforeach()
+
+if(unreplayed)
+  list(JOIN unreplayed "\n  " text)
+  message(FATAL_ERROR "case files without their regressions.<name> test:\n  ${text}")
+endif()
+list(LENGTH REPLAYED registered)
+message(STATUS "${count} case files in ${CASES_DIR}, each replayed by its own test (${registered} registered)")
