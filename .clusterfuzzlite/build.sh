@@ -1,9 +1,9 @@
 #!/bin/bash -eu
 # Builds collide's fuzz targets the OSS-Fuzz way: $CXX and $CXXFLAGS for every translation unit
 # (the library, the exact oracle, the laws and the targets, so coverage reaches all of them),
-# $LIB_FUZZING_ENGINE at link time, binaries and their seed corpora / options into $OUT.
+# $LIB_FUZZING_ENGINE at link time, binaries, their seed archives (fuzz/seeds) and options into $OUT.
 #
-# Inputs (set by ClusterFuzzLite / OSS-Fuzz, or by fuzz/check_build_sh.py locally):
+# Inputs (set by ClusterFuzzLite / OSS-Fuzz, or by scripts/check_build_sh.py locally):
 #   CXX CXXFLAGS LIB_FUZZING_ENGINE OUT; WORK (scratch, optional); SRC (checkout parent, optional)
 #   COLLIDE_JOBS (build parallelism, default: all cores)
 
@@ -45,11 +45,14 @@ BUILD_TARGETS=()
 for t in $TARGETS; do BUILD_TARGETS+=("fuzz_$t"); done
 cmake --build "$BUILD" -j "$JOBS" --target "${BUILD_TARGETS[@]}"
 
+# The seeds are committed as OSS-Fuzz wants them, one archive per target; the corpus that grows
+# lives in the workflows' storage repository.
 mkdir -p "$OUT"
 for t in $TARGETS; do
+  seeds="$ROOT/fuzz/seeds/${t}_seed_corpus.zip"
+  [[ -f "$seeds" ]] || { echo "build.sh: no seed archive $seeds (./harness fuzz --export-seeds writes it)" >&2; exit 1; }
   cp "$BUILD/fuzz/bin/$t" "$OUT/$t"
-  rm -f "$OUT/${t}_seed_corpus.zip"
-  (cd "$ROOT/fuzz/corpus/$t" && zip -q -r "$OUT/${t}_seed_corpus.zip" .)
+  cp "$seeds" "$OUT/${t}_seed_corpus.zip"
   printf '[libfuzzer]\nmax_len = 4096\n' > "$OUT/$t.options"
 done
 echo "build.sh: built $TARGETS into $OUT"

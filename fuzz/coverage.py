@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
-"""Line and branch coverage of lib/ by the fuzz corpora and the property suite
+"""Line and branch coverage of lib/ by the fuzz seeds and corpora and the property suite
 (the backend of `./harness coverage`).
 
   fuzz/coverage.py [--build-dir D] [--coverage-dir C] [--no-properties] [--jobs J]
 
 Builds the fuzz replay executables and the property suite with clang's source-based coverage
 (-fprofile-instr-generate -fcoverage-mapping) in C (default build/coverage; --build-dir is
-accepted for the harness and only used to place C beside it), replays every corpus
-fuzz/corpus/<target>/, runs the property suite at its ctest depth, merges the profiles with
+accepted for the harness and only used to place C beside it), replays every seed archive
+fuzz/seeds/<target>_seed_corpus.zip and the working corpus <corpus>/<target>/ where there is one
+(build/corpus, or $COLLIDE_CORPUS_DIR), runs the property suite at its ctest depth, merges the profiles with
 llvm-profdata and reports lib/ with llvm-cov: printed per file and in total, and written to
 build/reports/coverage.json.
 
@@ -23,6 +24,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "scripts"))
 from collide_tools import build_targets, cache_value, print_table  # noqa: E402
+from seeds import SeedError, unpack_seeds  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -73,9 +75,18 @@ def main():
     for t in targets:
         exe = build / "fuzz" / f"fuzz_replay_{t}"
         binaries.append(exe)
-        r = run([str(exe), str(ROOT / "fuzz/corpus" / t)], env=env, cwd=build, stdout=subprocess.DEVNULL)
+        seeds = build / "seeds" / t
+        shutil.rmtree(seeds, ignore_errors=True)
+        try:
+            unpack_seeds(ROOT / "fuzz/seeds" / f"{t}_seed_corpus.zip", seeds)
+        except SeedError as e:
+            print(f"coverage.py: {e}")
+            return 2
+        corpus = pathlib.Path(os.environ.get("COLLIDE_CORPUS_DIR") or ROOT / "build/corpus") / t
+        inputs = [seeds] + ([corpus] if corpus.is_dir() else [])
+        r = run([str(exe)] + [str(d) for d in inputs], env=env, cwd=build, stdout=subprocess.DEVNULL)
         if r.returncode != 0:
-            print(f"coverage.py: replay of {t}'s corpus failed ({r.returncode}); its profile still counts")
+            print(f"coverage.py: replay of {t}'s inputs failed ({r.returncode}); its profile still counts")
     if with_props:
         exe = build / "properties" / "collide_properties"
         binaries.append(exe)

@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the seed corpora fuzz/corpus/<target>/ in the input format of collide/fuzz/decode.hpp.
+"""Writes generated seeds into the working corpora <corpus>/<target>/ in the input format of
+collide/fuzz/decode.hpp (<corpus>: build/corpus, or $COLLIDE_CORPUS_DIR). `./harness fuzz
+--export-seeds` then minimises them into the committed archives fuzz/seeds/<target>_seed_corpus.zip.
 
 The kinds, their stored fields (with roles), sample shapes and byte forms are read from the build
 (collide_describe, which prints the codecs of oracles/laws/include/collide/laws/codec.hpp), so a
@@ -11,13 +13,14 @@ Some seeds place their shapes by transforms (pair flags bit 6: a transform after
 quarter turn or a rounded rotation; compounds whose children carry child transforms, count byte
 bit 7; shapes_from_bytes flags bit 1: a transform after the shape).
 
-usage: fuzz/make_corpus.py [--build-dir build/ci] [--out fuzz/corpus] [--drop-failing]
+usage: fuzz/make_corpus.py [--build-dir build/ci] [--out <corpus>] [--drop-failing]
 (replaces the seed files it writes, s-*.bin). With --drop-failing, every seed is run through
 the build's fuzz/fuzz_replay_<target> and seeds that fail are left out and listed: a seed corpus
-must pass (ctest replays it); failures belong in tests/regressions/ as cases.
+must pass (ctest replays the archives); failures belong in tests/regressions/ as cases.
 """
 import argparse
 import itertools
+import os
 import pathlib
 import struct
 import subprocess
@@ -217,7 +220,8 @@ TARGETS = ["overlap_oracle", "resolve", "contact_raycast", "shapes_from_bytes", 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build-dir", default="build/ci")
-    ap.add_argument("--out", default=str(ROOT / "fuzz/corpus"))
+    ap.add_argument("--out", default=os.environ.get("COLLIDE_CORPUS_DIR") or str(ROOT / "build/corpus"),
+                    help="working corpus root (default $COLLIDE_CORPUS_DIR, else build/corpus)")
     ap.add_argument("--drop-failing", action="store_true", help="leave out seeds that fail this build's replay")
     args = ap.parse_args()
     build = collide_tools.build_dir(args.build_dir)

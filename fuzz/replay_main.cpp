@@ -9,7 +9,8 @@
 //   replay --cases-of DIR...       replay the regression cases of this target found under DIR:
 //                                  *.case files whose source is "fuzz <target> input <hex>" (the
 //                                  input bytes through the target, then the law on the values)
-//                                  and <target>-*.input raw inputs
+//                                  and <target>-*.input raw inputs. A file named instead of a
+//                                  directory must be such a case of this target.
 //
 // Exit status: 0 when everything passed (a failing input aborts, as under the engine); 1 when a
 // case's law fails on replay; 2 on usage or I/O errors.
@@ -143,6 +144,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: no such file or directory\n", root.string().c_str());
       return 2;
     }
+    const std::size_t replayed_before = case_files + raw;
     for (const fs::path& p : files_under(root)) {
       if (!cases) {
         const auto bytes = read_bytes(p);
@@ -188,6 +190,11 @@ int main(int argc, char** argv) {
         }
         ++case_files;
       }
+    }
+    // A case named on the command line that this target does not replay would pass unseen.
+    if (cases && status == 0 && !fs::is_directory(root) && case_files + raw == replayed_before) {
+      std::fprintf(stderr, "%s: not a regression case of fuzz target %s\n", root.string().c_str(), target.c_str());
+      return 2;
     }
   }
   if (cases) {

@@ -3,10 +3,15 @@
 
   fuzz/run.py [--build-dir D] [--target T ...] [--minutes M | --hours H] [--jobs J]
               [--no-sanitizers] [--no-merge] [--resume]
+  fuzz/run.py --export-seeds [--reminimise] [--build-dir D] [--target T ...]
 
 - Configures and builds the `fuzz` preset (clang, ASan + UBSan, -fsanitize=fuzzer) if needed.
   D is used when it is such a build; otherwise (e.g. the g++ build the harness passes) the fuzz
   build goes to build/fuzz beside it. --no-sanitizers builds build/fuzz-nosan instead (speed).
+- The working corpus of each target is <corpus>/<target>/, outside the tracked tree: build/corpus
+  unless COLLIDE_CORPUS_DIR or --corpus-dir names another root. The committed seed archive
+  fuzz/seeds/<target>_seed_corpus.zip is unpacked into it first (all of it into a missing or
+  empty one; into an older one, the seeds it lacks).
 - Runs the targets one after another, sharing the time budget (M minutes in total), each in
   libFuzzer's fork mode with J workers, so a failure is recorded and the run goes on. Prints a
   progress line each minute of the whole run: elapsed and total time, the current target and its
@@ -16,16 +21,24 @@
   status. The plan (targets, time each, what finished) is kept in build/fuzz-runs/state.json:
   --resume runs what is left of it (the interrupted target for its remaining time, from its
   inputs so far, then the targets not started) and reports the whole run.
-- At the end merges the new inputs that add coverage into fuzz/corpus/<target>/ (-merge=1),
+- At the end merges the new inputs that add coverage into the working corpus (-merge=1),
   groups the failing inputs by what failed (law, scalar and wording of the account, or the
   sanitizer's summary), minimises the smallest input of each group, and turns it into a
   regression case under tests/regressions/: a .case file + .svg (the property suite's format)
   when a law broke, else the raw input (<target>-<hash>.input) with the crash report beside it
   (.txt).
 - Writes build/reports/fuzz.md and build/reports/fuzz.json.
+- --export-seeds fuzzes nothing: for each target it minimises the working corpus together with the
+  current seeds (-merge=1 into an empty directory) and rewrites fuzz/seeds/<target>_seed_corpus.zip
+  for a commit: entries named by their SHA-1, in name order, with fixed timestamps, so the same
+  inputs always give the same bytes. An archive whose inputs the working corpus adds no coverage
+  to is left as it is (--reminimise rewrites it too: for an archive that was never minimised,
+  or after a change to a target that alters its coverage). Prints, per target, the inputs, bytes
+  and libFuzzer's cov of the archive and of the working corpus.
 
 Exit status: 0 when no target failed, 1 when failures were found (an interrupted run too: its
-report says it was interrupted), 2 on a build or usage error.
+report says it was interrupted), 2 on a build or usage error or a seed archive that cannot be
+read or written.
 """
 import argparse
 import json
@@ -41,9 +54,11 @@ import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "scripts"))
 from collide_tools import build_targets, cache_value, fnv1a, write_report  # noqa: E402
+from seeds import SeedError, entry_name, read_seeds, unpack_seeds, write_seeds  # noqa: E402
 
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+INITED_RE = re.compile(r"INITED cov: (\d+) ft: (\d+)")
 STATS_RE = re.compile(r"#(\d+):?\s.*?cov: (\d+).*?ft: (\d+).*?corp: (\d+).*?exec/s:? (\d+)")
 CASE_RE = re.compile(r"case file: (\S+)")
 RAW_RE = re.compile(r"regression input: (\S+)")
@@ -125,13 +140,15 @@ def shielded(cmd, **kw):
 
 
 class Places:
-    """Where a run reads and writes: the tree's corpus, regressions, scratch and reports unless
-    told otherwise (the interruption test runs against a scratch copy)."""
+    """Where a run reads and writes: the working corpus (build/corpus, or COLLIDE_CORPUS_DIR), the
+    tree's seed archives and regressions, scratch and reports unless told otherwise (the tests run
+    against scratch copies)."""
 
     def __init__(self, args):
         def pick(value, default):
             return pathlib.Path(value).resolve() if value else ROOT / default
-        self.corpus = pick(args.corpus_dir, "fuzz/corpus")
+        self.corpus = pick(args.corpus_dir or os.environ.get("COLLIDE_CORPUS_DIR"), "build/corpus")
+        self.seeds = pick(args.seeds_dir, "fuzz/seeds")
         self.regressions = pick(args.regressions_dir, "tests/regressions")
         self.runs = pick(args.runs_dir, "build/fuzz-runs")
         self.reports = pick(args.reports_dir, "build/reports")
@@ -194,6 +211,34 @@ class Ticker:
 def clock(seconds):
     s = int(seconds)
     return f"{s // 3600}:{s % 3600 // 60:02d}:{s % 60:02d}"
+
+
+def seed_archive(places, target):
+    return places.seeds / f"{target}_seed_corpus.zip"
+
+
+def prepare_corpus(places, target):
+    """Makes sure <corpus>/<target>/ exists and holds every seed of the target's archive: a new
+    one gets them all, an older one those committed since (inputs are named by their SHA-1 in
+    both, so a seed already there is not written twice). Raises SeedError when the archive
+    cannot be read."""
+    corpus = places.corpus / target
+    corpus.mkdir(parents=True, exist_ok=True)
+    archive = seed_archive(places, target)
+    if not archive.exists():
+        if not any(corpus.iterdir()):
+            log(f"  {target}: no seed archive {shown(archive)}; starting from an empty corpus")
+        return corpus
+    seeds = read_seeds(archive)
+    missing = {name: data for name, data in seeds.items() if not (corpus / name).exists()}
+    if missing:  # inputs under other names (written by make_corpus.py, say) are there already
+        held = {entry_name(p.read_bytes()) for p in corpus.iterdir() if p.is_file()}
+        missing = {name: data for name, data in missing.items() if name not in held}
+    for name, data in missing.items():
+        (corpus / name).write_bytes(data)
+    if missing:
+        log(f"  {target}: unpacked {len(missing)} of the {len(seeds)} seeds of {shown(archive)} into {shown(corpus)}")
+    return corpus
 
 
 def run_target(binary, target, seconds, jobs, work, places, stop, ticker, label, keep_inputs):
@@ -265,6 +310,87 @@ def merge(binary, target, work, places):
     if r.returncode != 0:
         log(f"  merge of {target} exited with {r.returncode} (corpus kept as merged so far)")
     return len(after - before), len(after)
+
+
+def coverage(binary, corpus, work):
+    """libFuzzer's (cov, ft) after loading every input of corpus once (-runs=0)."""
+    r = shielded([str(binary), "-runs=0", "-max_len=4096", "-timeout=20", "-rss_limit_mb=2560", str(corpus)],
+                 cwd=work, capture_output=True, text=True, errors="replace")
+    m = INITED_RE.search(r.stderr + r.stdout)
+    return (int(m.group(1)), int(m.group(2))) if m and r.returncode == 0 else None
+
+
+def merged_into(binary, out, inputs, work):
+    """-merge=1: the inputs of the directories `inputs` that add coverage to `out` are copied into
+    it. Returns the files added, or None when the merge failed."""
+    before = {p.name for p in out.iterdir()}
+    r = shielded([str(binary), "-merge=1", "-max_len=4096", "-timeout=20", "-rss_limit_mb=2560", str(out)]
+                 + [str(d) for d in inputs], cwd=work, capture_output=True, text=True, errors="replace")
+    if r.returncode != 0:
+        log(f"  merge exited with {r.returncode}:\n{r.stderr[-2000:]}")
+        return None
+    return sorted(p for p in out.iterdir() if p.name not in before)
+
+
+def export_seeds(binary, target, places, reminimise):
+    """Minimises the working corpus with the current seeds and rewrites the target's archive
+    unless the corpus adds no coverage to it (reminimise: rewrites it in any case). Returns a
+    report entry, or None on a failure."""
+    archive = seed_archive(places, target)
+    corpus = prepare_corpus(places, target)
+    work = places.runs / "export" / target
+    shutil.rmtree(work, ignore_errors=True)
+    current, probe, minimised = work / "current", work / "probe", work / "minimised"
+    for d in (current, probe, minimised):
+        d.mkdir(parents=True)
+    if archive.exists() and not reminimise:
+        unpack_seeds(archive, current)
+        unpack_seeds(archive, probe)
+        added = merged_into(binary, probe, [corpus], work)
+        if added is None:
+            return None
+        if not added:
+            # Nothing new: the corpus's coverage is the archive's, one replay of the archive says it.
+            cov = coverage(binary, current, work)
+            return {"target": target, "archive": shown(archive), "rewritten": False,
+                    "inputs": len(read_seeds(archive)), "bytes": archive.stat().st_size, "coverage": cov,
+                    "corpus_coverage": cov}
+    # prepare_corpus() put every current seed into the corpus: minimising it minimises both.
+    if merged_into(binary, minimised, [corpus], work) is None:
+        return None
+    inputs = {p.read_bytes() for p in minimised.iterdir() if p.is_file()}
+    if not inputs:
+        log(f"  {target}: the minimised corpus is empty; {shown(archive)} left as it is")
+        return None
+    write_seeds(archive, inputs)
+    entry = {"target": target, "archive": shown(archive), "rewritten": True, "inputs": len(inputs),
+             "bytes": archive.stat().st_size}
+    entry["coverage"] = coverage(binary, minimised, work)
+    entry["corpus_coverage"] = coverage(binary, corpus, work)
+    return entry
+
+
+def export_all(bin_dir, targets, places, reminimise):
+    """--export-seeds for every target; returns the exit status."""
+    status = 0
+    for t in targets:
+        log(f"== {t}: minimising {shown(places.corpus / t)} with {shown(seed_archive(places, t))}")
+        try:
+            entry = export_seeds(bin_dir / t, t, places, reminimise)
+        except SeedError as e:
+            log(f"fuzz/run.py: {e}")
+            entry = None
+        if entry is None:
+            status = 2
+            continue
+
+        def cov(c):
+            return f"cov {c[0]} ft {c[1]}" if c else "cov unknown (the replay failed)"
+        log(f"  {t}: {'rewrote' if entry['rewritten'] else 'unchanged (the working corpus adds no coverage)'} "
+            f"{entry['archive']}: {entry['inputs']} inputs, {entry['bytes']} bytes, {cov(entry['coverage'])}; "
+            f"working corpus: {cov(entry['corpus_coverage'])}")
+    shutil.rmtree(places.runs / "export", ignore_errors=True)
+    return status
 
 
 def signature(binary, artifact, work):
@@ -398,6 +524,19 @@ def save_plan(places, plan):
     tmp.replace(places.state)
 
 
+def export_main(args, places):
+    if args.fuzzer_dir:
+        bin_dir = pathlib.Path(args.fuzzer_dir).resolve()
+        targets = args.target or sorted(p.name for p in bin_dir.iterdir() if os.access(p, os.X_OK))
+    else:
+        build = choose_build_dir(args.build_dir, args.no_sanitizers)
+        bin_dir = build / "fuzz/bin"
+        targets = configure_and_build(build, args.target, args.jobs, args.no_sanitizers)
+        if targets is None:
+            return 2
+    return export_all(bin_dir, targets, places, args.reminimise)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
@@ -408,17 +547,28 @@ def main():
     budget.add_argument("--hours", type=float, help="total time budget in hours")
     ap.add_argument("--jobs", type=int, default=2, help="fork workers per target and build parallelism (default 2)")
     ap.add_argument("--no-sanitizers", action="store_true", help="build and run without ASan/UBSan (speed)")
-    ap.add_argument("--no-merge", action="store_true", help="leave fuzz/corpus/ unchanged")
+    ap.add_argument("--no-merge", action="store_true", help="leave the working corpus unchanged")
+    ap.add_argument("--export-seeds", action="store_true",
+                    help="fuzz nothing: minimise the working corpus with the seeds into fuzz/seeds/*.zip")
+    ap.add_argument("--reminimise", action="store_true",
+                    help="with --export-seeds: rewrite every archive, also where the corpus adds no coverage")
     ap.add_argument("--resume", action="store_true",
                     help="go on with an interrupted run (its targets, time and options; others are ignored)")
     ap.add_argument("--progress-seconds", type=float, default=60, help="interval of the progress line (default 60)")
     ap.add_argument("--fuzzer-dir", help="use the fuzzer executables <dir>/<target> as they are (no configure/build)")
-    ap.add_argument("--corpus-dir", help="corpus root (default fuzz/corpus)")
+    ap.add_argument("--corpus-dir", help="working corpus root (default $COLLIDE_CORPUS_DIR, else build/corpus)")
+    ap.add_argument("--seeds-dir", help="the seed archives <target>_seed_corpus.zip (default fuzz/seeds)")
     ap.add_argument("--regressions-dir", help="where failures become cases (default tests/regressions)")
     ap.add_argument("--runs-dir", help="scratch and the resumable state (default build/fuzz-runs)")
     ap.add_argument("--reports-dir", help="fuzz.md and fuzz.json (default build/reports)")
     args = ap.parse_args()
     places = Places(args)
+    if args.export_seeds and args.resume:
+        ap.error("--export-seeds and --resume do not go together")
+    if args.reminimise and not args.export_seeds:
+        ap.error("--reminimise goes with --export-seeds")
+    if args.export_seeds:
+        return export_main(args, places)
 
     if args.resume:
         if not places.state.exists():
@@ -447,6 +597,13 @@ def main():
         targets = configure_and_build(build, plan["targets"], plan["jobs"], not plan["sanitizers"])
         if targets is None:
             return 2
+    # Every working corpus is ready before anything runs: a bad archive stops the run here.
+    try:
+        for t in targets:
+            prepare_corpus(places, t)
+    except SeedError as e:
+        log(f"fuzz/run.py: {e}")
+        return 2
     if not args.resume:
         plan["targets"] = targets
         plan["per_target"] = max(10, int(plan["total_seconds"] / len(targets)))

@@ -28,12 +28,19 @@ def stand_in(target, argv):
     """A fuzzer executable as far as run.py uses one."""
     flags = {a.split("=", 1)[0]: a.split("=", 1)[1] if "=" in a else "" for a in argv if a.startswith("-")}
     paths = [pathlib.Path(a) for a in argv if not a.startswith("-")]
-    if "-merge" in flags:  # -merge=1 SEEDS NEW: keep every new input (each "adds coverage")
-        seeds, *others = paths
+    if "-merge" in flags:  # -merge=1 OUT IN...: an input "adds coverage" when its bytes are new to OUT
+        out, *others = paths
+        held = {f.read_bytes() for f in out.iterdir()}
         for d in others:
-            for f in d.iterdir():
-                if not (seeds / f.name).exists():
-                    (seeds / f.name).write_bytes(f.read_bytes())
+            for f in sorted(d.iterdir()):
+                data = f.read_bytes()
+                if data not in held and not (out / f.name).exists():
+                    (out / f.name).write_bytes(data)
+                    held.add(data)
+        return 0
+    if flags.get("-runs") == "0":  # load the corpus once: "coverage" is the count of distinct inputs
+        distinct = {f.read_bytes() for d in paths for f in d.iterdir()}
+        sys.stderr.write(f"#{len(distinct)} INITED cov: {len(distinct)} ft: {len(distinct)} corp: {len(distinct)}\n")
         return 0
     if "-minimize_crash" in flags:
         pathlib.Path(flags["-exact_artifact_path"]).write_bytes(paths[0].read_bytes())
@@ -107,8 +114,8 @@ def main():
         ledger.touch()
         env = dict(os.environ, STAND_IN_LEDGER=str(ledger))
         common = [sys.executable, str(HERE / "run.py"), "--fuzzer-dir", str(bins), "--corpus-dir", str(corpus),
-                  "--regressions-dir", str(regressions), "--runs-dir", str(runs), "--reports-dir", str(reports),
-                  "--progress-seconds", "0.5"]
+                  "--seeds-dir", str(tmp / "seeds"), "--regressions-dir", str(regressions), "--runs-dir", str(runs),
+                  "--reports-dir", str(reports), "--progress-seconds", "0.5"]
 
         def run(extra, stop_when, sig):
             """Starts run.py, sends sig once stop_when(output so far) holds; returns (status, output)."""

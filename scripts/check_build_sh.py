@@ -10,8 +10,9 @@ Sets CXX=clang++, CXXFLAGS with ASan and -fsanitize=fuzzer-no-link, a scratch $O
   targets) is built and linked against libc++, which the check confirms in each binary (libc++
   loaded, collide's code in std::__1, no gmpxx).
 Then checks what OSS-Fuzz expects in $OUT: every target built, each with <target>_seed_corpus.zip
-and <target>.options, and each binary replays its unzipped seed corpus and fuzzes briefly (which
-runs the custom mutator) without a failure.
+(the committed fuzz/seeds/<target>_seed_corpus.zip as it is) and <target>.options, and each binary
+replays its unzipped seed corpus and fuzzes briefly (which runs the custom mutator) without a
+failure.
 """
 import argparse
 import os
@@ -127,6 +128,10 @@ def main():
                 failures += 1
         if not binary.exists() or not zipped.exists():
             continue
+        committed = ROOT / "fuzz/seeds" / zipped.name
+        if not committed.exists() or committed.read_bytes() != zipped.read_bytes():
+            print(f"FAIL: {zipped.name} in $OUT is not the committed {committed.relative_to(ROOT)}")
+            failures += 1
         if "[libfuzzer]" not in options.read_text():
             print(f"FAIL: {options.name} has no [libfuzzer] section")
             failures += 1

@@ -15,7 +15,9 @@ For every .github/workflows/*.yml (PyYAML, Debian's python3-yaml):
 Then what the project promises of its workflows: code-change fuzzing of pull requests with the
 address and undefined sanitizers, scheduled batch fuzzing, pruning and coverage, all with a
 storage repository; a CI job that runs .ci/run in a debian:12 container, and the sanitizer
-presets. Last, .clusterfuzzlite/Dockerfile's pinned versions meet the minimums configure checks
+presets. The seeds ClusterFuzzLite starts from: every fuzz target has its committed archive
+fuzz/seeds/<target>_seed_corpus.zip, and every tree path .clusterfuzzlite/build.sh names exists.
+Last, .clusterfuzzlite/Dockerfile's pinned versions meet the minimums configure checks
 (oracles/exact/CMakeLists.txt) and its header states those same minimums.
 """
 import json
@@ -249,6 +251,23 @@ def check_image_pins(problems):
             check_path(problems, ".clusterfuzzlite/Dockerfile COPY", src)
 
 
+def fuzz_targets():
+    return sorted(p.stem for p in (ROOT / "fuzz/targets").glob("*.cpp"))
+
+
+def check_seeds(problems):
+    """Seed archives of every target, and the tree paths build.sh reads ($ROOT/...; a ${t} in one
+    stands for each target)."""
+    for t in fuzz_targets():
+        check_path(problems, f"fuzz target {t}", f"fuzz/seeds/{t}_seed_corpus.zip")
+    build_sh = (ROOT / ".clusterfuzzlite/build.sh").read_text()
+    for path in sorted(set(re.findall(r'\$ROOT/([\w./${}-]+)', build_sh))):
+        for t in (fuzz_targets() if "${t}" in path else [None]):
+            concrete = path.replace("${t}", t) if t else path
+            if "$" not in concrete:
+                check_path(problems, ".clusterfuzzlite/build.sh", concrete)
+
+
 # Faults planted in an otherwise sound workflow: each must be reported.
 SOUND = """name: planted
 on:
@@ -310,6 +329,7 @@ def main():
         check_workflow(problems, f, known, project.get("language"), seen)
     check_promises(problems, seen)
     check_image_pins(problems)
+    check_seeds(problems)
     for fault in check_planted(known, project.get("language")):
         problems.add("planted faults", f"{fault} went unreported")
     for p in problems:

@@ -9,9 +9,10 @@ check failing there is left out of the matrix (and named), so only what a mutant
 
 Layers, each run to its first failure (the time to it is the kill time):
   properties  the property suite at CI depth (200 cases per test, seed 1, no shrinking)
-  replays     the regression cases (collide_replay_cases), every fuzz target's corpus and
-              regression replays, and the adversarial boundary cases at ctest's fixed seed
-              (200,000 cases of tests/adversarial, replayed identically every run)
+  replays     the regression cases (collide_replay_cases), every fuzz target's seed archive
+              (fuzz/seeds, unpacked into build/mutation/seeds) and regression replays, and the
+              adversarial boundary cases at ctest's fixed seed (200,000 cases of
+              tests/adversarial, replayed identically every run)
   unit        the unit tests
 
 Writes build/reports/mutation.{md,json} (and a timestamped copy of each under
@@ -44,6 +45,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import zipfile
 
 import collide_tools
 
@@ -224,7 +226,7 @@ def prepare_tree(build: pathlib.Path, patched: dict[str, str]) -> pathlib.Path:
     files = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"], cwd=ROOT,
                            capture_output=True, text=True, check=True).stdout.splitlines()
     for rel in files:
-        if rel.startswith(("fuzz/corpus/", "build/")) or not (ROOT / rel).is_file():
+        if rel.startswith("build/") or not (ROOT / rel).is_file():
             continue
         text_or_bytes = patched.get(rel)
         dest = src / rel
@@ -235,10 +237,24 @@ def prepare_tree(build: pathlib.Path, patched: dict[str, str]) -> pathlib.Path:
             dest.parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(ROOT / rel, dest)
     write_if_changed(src / "lib/include/collide/detail/mutant_switch.hpp", SWITCH_HEADER)
-    corpus = src / "fuzz" / "corpus"
-    if not corpus.exists():
-        corpus.symlink_to(ROOT / "fuzz" / "corpus")
     return src
+
+
+def unpack_seeds(build: pathlib.Path, target: str) -> pathlib.Path:
+    """The inputs of the target's seed archive, in a fresh build/mutation/seeds/<target>/."""
+    archive = ROOT / "fuzz" / "seeds" / f"{target}_seed_corpus.zip"
+    out = build / "seeds" / target
+    shutil.rmtree(out, ignore_errors=True)
+    out.mkdir(parents=True)
+    try:
+        with zipfile.ZipFile(archive) as z:
+            for info in z.infolist():
+                name = pathlib.PurePosixPath(info.filename).name
+                if not info.is_dir() and name:
+                    (out / name).write_bytes(z.read(info))
+    except (OSError, zipfile.BadZipFile) as e:
+        raise ListError(f"cannot read the seed archive {archive}: {e}") from e
+    return out
 
 
 def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[str]]]:
@@ -280,7 +296,7 @@ def build_tree(build: pathlib.Path, src: pathlib.Path) -> dict[str, list[list[st
         name = path.rsplit("/", 1)[-1]
         if layer == "replays" and name.startswith("fuzz_replay_"):
             target = name[len("fuzz_replay_"):]
-            layers["replays"].append([exe, str(ROOT / "fuzz" / "corpus" / target)])
+            layers["replays"].append([exe, str(unpack_seeds(build, target))])
             layers["replays"].append([exe, "--cases-of", regressions])
         elif name == "adversarial_exact_decisions":
             # The boundary cases ctest replays: a fixed seed and the program's default count, so the

@@ -338,13 +338,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #if defined(COLLIDE_FUZZ_ENGINE)
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
                                                unsigned int seed) {
-  auto parse = [](const std::uint8_t* d, std::size_t n) {
-    std::vector<Field> fields;
-    Reader r(d, n, &fields);
-    parse_only(r);
-    return fields;
-  };
-  auto no_touch = [](const std::uint8_t*, std::size_t, TouchRequest, Rng&) { return std::optional<Vec2c>(); };
-  return mutate(data, size, max_size, seed, parse, no_touch, MutatorOptions{1, false});
+  return mutate_fields(
+      data, size, max_size, seed, [](Reader& r) { parse_only(r); }, MutatorOptions{1, false});
 }
 #endif

@@ -240,18 +240,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #if defined(COLLIDE_FUZZ_ENGINE)
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
                                                unsigned int seed) {
-  auto parse = [](const std::uint8_t* d, std::size_t n) {
-    std::vector<Field> fields;
-    Reader r(d, n, &fields);
+  auto read_input = [](Reader& r) {
     const bool is_double = (r.byte() & 1) != 0;
     if (is_double) {
       static_cast<void>(decode_shape<double>(r));
     } else {
       static_cast<void>(decode_shape<float>(r));
     }
-    return fields;
   };
-  auto no_touch = [](const std::uint8_t*, std::size_t, TouchRequest, Rng&) { return std::optional<Vec2c>(); };
-  return mutate(data, size, max_size, seed, parse, no_touch, MutatorOptions{6, false});
+  return mutate_fields(data, size, max_size, seed, read_input, MutatorOptions{6, false});
 }
 #endif

@@ -298,4 +298,21 @@ std::size_t mutate(std::uint8_t* data, std::size_t size, std::size_t max_size, u
   }
 }
 
+/// The mutator of a target without a pair of shapes to place touching: read_input(reader) reads
+/// an input the way the target does, so that the reader records its fields; the mutation then
+/// works on those fields.
+template <class ReadInput>
+std::size_t mutate_fields(std::uint8_t* data, std::size_t size, std::size_t max_size, unsigned seed,
+                          ReadInput&& read_input, MutatorOptions options) {
+  options.touch = false;
+  auto parse = [&](const std::uint8_t* d, std::size_t n) {
+    std::vector<Field> fields;
+    Reader r(d, n, &fields);
+    read_input(r);
+    return fields;
+  };
+  auto no_touch = [](const std::uint8_t*, std::size_t, TouchRequest, Rng&) { return std::optional<Vec2c>(); };
+  return mutate(data, size, max_size, seed, parse, no_touch, options);
+}
+
 }  // namespace collide::fuzz
