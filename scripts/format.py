@@ -18,7 +18,7 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 SUFFIXES = (".cpp", ".hpp", ".h")
-FOLDERS = ("lib", "oracles", "properties", "fuzz", "tests", "bench", "examples")
+FOLDERS = ("lib", "oracles", "properties", "fuzz", "tests", "bench", "examples", "judge")
 
 
 def sources():
