@@ -6,16 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
-namespace {
+#include "check.hpp"
 
-int failures = 0;
-
-void check(bool ok, const char* what) {
-  std::printf("%s %s\n", ok ? "ok  " : "FAIL", what);
-  if (!ok) ++failures;
-}
-
-}  // namespace
+using consumer::check;
+using consumer::failures;
 
 int main() {
   using V = collide::Vec2<double>;
