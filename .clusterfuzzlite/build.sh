@@ -2,6 +2,9 @@
 # Builds collide's fuzz targets the OSS-Fuzz way: $CXX and $CXXFLAGS for every translation unit
 # (the library, the exact oracle, the laws and the targets, so coverage reaches all of them),
 # $LIB_FUZZING_ENGINE at link time, binaries, their seed archives (fuzz/seeds) and options into $OUT.
+# With them the judge's targets judge_<adapter> (judge/fuzz) whose library the image has: their
+# Debian libraries are not instrumented (coverage comes from the adapters and the judge), and
+# their shared objects are copied to $OUT/lib, where the binaries look first ($ORIGIN/lib).
 #
 # Inputs (set by ClusterFuzzLite / OSS-Fuzz, or by scripts/check_build_sh.py locally):
 #   CXX CXXFLAGS LIB_FUZZING_ENGINE OUT; WORK (scratch, optional); SRC (checkout parent, optional)
@@ -37,11 +40,13 @@ cmake -S "$ROOT" -B "$BUILD" -G Ninja \
   -DCOLLIDE_FUZZ_ENGINE="$LIB_FUZZING_ENGINE"
 
 TARGETS="$(sed -n 's/^COLLIDE_FUZZ_TARGETS:INTERNAL=//p' "$BUILD/CMakeCache.txt" | tr ';' ' ')"
+JUDGE_TARGETS="$(sed -n 's/^COLLIDE_JUDGE_FUZZ_TARGETS:INTERNAL=//p' "$BUILD/CMakeCache.txt" | tr ';' ' ')"
 if [[ -z "$TARGETS" ]]; then
   echo "build.sh: no fuzz targets configured (is collide::laws available?)" >&2
   exit 1
 fi
 BUILD_TARGETS=()
+TARGETS="$TARGETS $JUDGE_TARGETS"
 for t in $TARGETS; do BUILD_TARGETS+=("fuzz_$t"); done
 cmake --build "$BUILD" -j "$JOBS" --target "${BUILD_TARGETS[@]}"
 
@@ -54,5 +59,11 @@ for t in $TARGETS; do
   cp "$BUILD/fuzz/bin/$t" "$OUT/$t"
   cp "$seeds" "$OUT/${t}_seed_corpus.zip"
   printf '[libfuzzer]\nmax_len = 4096\n' > "$OUT/$t.options"
+done
+for t in $JUDGE_TARGETS; do
+  ldd "$BUILD/fuzz/bin/$t" | awk '$1 ~ /^lib(box2d|chipmunk)[.]/ && $3 ~ /^\// {print $3}' | while read -r lib; do
+    mkdir -p "$OUT/lib"
+    cp -L "$lib" "$OUT/lib/"
+  done
 done
 echo "build.sh: built $TARGETS into $OUT"

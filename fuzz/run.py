@@ -28,6 +28,9 @@
   when a law broke, else the raw input (<target>-<hash>.input) with the crash report beside it
   (.txt).
 - Writes build/reports/fuzz.md and build/reports/fuzz.json.
+- The judge's targets judge_<adapter> (judge/fuzz, COLLIDE_JUDGE_FUZZ_TARGETS) judge other
+  libraries: they run only when named (--target judge_box2d), and their failures go to
+  build/reports/judge-fuzz/ (raw input and account), never to tests/regressions/.
 - --export-seeds fuzzes nothing: for each target it minimises the working corpus together with the
   current seeds (-merge=1 into an empty directory) and rewrites fuzz/seeds/<target>_seed_corpus.zip
   for a commit: entries named by their SHA-1, in name order, with fixed timestamps, so the same
@@ -89,12 +92,13 @@ def configure_and_build(build, targets, jobs, no_sanitizers):
             return None
     else:
         subprocess.run(["cmake", str(build)], cwd=ROOT, stdout=subprocess.DEVNULL)
-    available = (cache_value(build, "COLLIDE_FUZZ_TARGETS") or "").split(";")
-    available = [t for t in available if t]
+    available = [t for t in (cache_value(build, "COLLIDE_FUZZ_TARGETS") or "").split(";") if t]
     if not available:
         log(f"fuzz/run.py: {build} lists no fuzz targets (COLLIDE_FUZZ_TARGETS)")
         return None
     chosen = targets or available
+    # The judge's targets (judge/fuzz) are built and run only when named.
+    available += [t for t in (cache_value(build, "COLLIDE_JUDGE_FUZZ_TARGETS") or "").split(";") if t]
     unknown = [t for t in chosen if t not in available]
     if unknown:
         log(f"fuzz/run.py: unknown target(s) {unknown}; available: {available}")
@@ -407,8 +411,11 @@ def signature(binary, artifact, work):
                 if ln.strip().startswith(("expected:", "got:"))]
         return " | ".join([head.strip()] + [" ".join(x.split()[:8]) for x in said])
     summary = next((ln for ln in lines if "SUMMARY:" in ln), None)
+    # An assert inside an uninstrumented library (a judge target's) is only a deadly signal to
+    # the sanitizer: its message tells one assert from another.
+    assertion = next((re.sub(r"^\S+: ", "", ln.strip()) for ln in lines if "Assertion `" in ln), None)
     if summary:
-        return re.sub(r"0x[0-9a-f]+", "", summary.strip())
+        return " | ".join(x for x in (assertion, re.sub(r"0x[0-9a-f]+", "", summary.strip())) if x)
     return f"{pathlib.Path(artifact).name.split('-')[0]} (exit {r.returncode})"
 
 
@@ -421,8 +428,15 @@ def distinct_failures(binary, artifacts, work):
             for sig, arts in groups.items()]
 
 
+def is_judge_target(target):
+    """A target of judge/fuzz: its failures are another library's answers (docs/judge.md)."""
+    return target.startswith("judge_")
+
+
 def to_regression(binary, target, artifact, work, places):
-    """Minimises a failure and stores it as a regression case; returns a description."""
+    """Minimises a failure and stores it as a regression case; returns a description. A judge
+    target's failure is another library's answer, never collide's regression: it is kept under
+    <reports>/judge-fuzz/ instead of tests/regressions/."""
     art = pathlib.Path(artifact)
     kind = art.name.split("-")[0]
     minimized = work / f"min-{art.name}"
@@ -435,7 +449,7 @@ def to_regression(binary, target, artifact, work, places):
         minimized.unlink()
     if not minimized.exists():
         shutil.copy(art, minimized)
-    regressions = places.regressions
+    regressions = places.reports / "judge-fuzz" if is_judge_target(target) else places.regressions
     regressions.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, COLLIDE_FUZZ_CASE_DIR=str(regressions))
     r = shielded([str(binary), "-timeout=20", "-rss_limit_mb=2560", str(minimized)], cwd=work, env=env,

@@ -8,7 +8,8 @@
 /// aligned), a circle touching a face of the other shape, turned faces included (up to the
 /// rounding of its centre), touching nudged by a few ulps either way, overlapping, or one shape
 /// shrunk inside the other; then the pair is turned by quarter turns. Shapes are sometimes tiny
-/// (2^-20) or huge (2^20), sometimes far from the origin (about 1e6), slivers (zero width, zero
+/// (2^-20) or huge (2^20), sometimes far from the origin (about 1e6) or, on request, far across
+/// the axis they meet along (up to 1e7 in float, 1e15 in double), slivers (zero width, zero
 /// radius, thin triangles) and near-parallel edges (axes like (64, 1)). The kind of each shape is
 /// chosen through the registry (visit_kind).
 
@@ -113,6 +114,15 @@ Transform<T> gen_transform(double s) {
   }
   if (style == 4) return Transform<T>::make(V(T(1e6 + grid(-8, 8)), T(-1e6)), T(grid(-64, 64) / 10)).value();
   return Transform<T>::make_translation(V(T(grid(-64, 64) * s / 3), T(grid(-64, 64) * s / 3))).value();
+}
+
+/// The size of a pair (the larger side of the box around both, at least 2^-20), for transforms
+/// that keep a pair far from the origin where it is.
+template <Scalar T>
+double size_of_pair(const Shape<T>& a, const Shape<T>& b) {
+  const Aabb<T> ba = bounds(a), bb = bounds(b);
+  const Vec2c lo = widen(ba.min()).cwiseMin(widen(bb.min())), hi = widen(ba.max()).cwiseMax(widen(bb.max()));
+  return std::max((hi - lo).maxCoeff(), 0x1p-20);
 }
 
 /// The scale of a pair (its largest coordinate, at least 2^-20), for transforms at its scale.
@@ -309,10 +319,23 @@ std::optional<Vec2<T>> circle_onto_face(const Shape<T>& fixed, const Shape<T>& m
   return std::nullopt;
 }
 
-/// A pair of kinds (A, B) placed on purpose (see the file comment); `only` restricts the placement
-/// (the touching law asks for touching and nudged pairs only).
+/// An offset far along y, for a pair whose placement axis is x: 1e5, 1e6 or 1e7 in float, 1e12,
+/// 1e14 or 1e15 in double, either sign (exact in T).
 template <Scalar T>
-std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional<Placement> only = std::nullopt) {
+T far_across_offset() {
+  const std::vector<double> far =
+      std::is_same_v<T, float> ? std::vector<double>{1e5, 1e6, 1e7} : std::vector<double>{1e12, 1e14, 1e15};
+  return T(*rc::gen::elementOf(far) * *rc::gen::element(-1.0, 1.0));
+}
+
+/// A pair of kinds (A, B) placed on purpose (see the file comment); `only` restricts the placement
+/// (the touching law asks for touching and nudged pairs only). With `across`, the pair is always
+/// moved far across its placement axis (far_across_offset() along y before the turn, while the
+/// shapes meet along x: resting on a floor, against a wall): a resolution margin that grew with
+/// the coordinates across the push fails there.
+template <Scalar T>
+std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional<Placement> only = std::nullopt,
+                                       bool across = false) {
   using V = Vec2<T>;
   const int e = *rc::gen::weightedElement<int>({{1, -20}, {1, -6}, {6, 0}, {1, 6}, {1, 20}});
   const double s = std::ldexp(1.0, e);
@@ -350,8 +373,16 @@ std::pair<Shape<T>, Shape<T>> gen_pair(ShapeKind ka, ShapeKind kb, std::optional
     }
   }
   mover = moved(mover, t);
-  // Far from the origin, sometimes: both moved by the same (exact) large offset.
-  if (*rc::gen::inRange(0, 6) == 0) {
+  if (across) {
+    // Both moved, or neither (a shape that rounding collapses there keeps the pair as it was).
+    const V far(T(0), far_across_offset<T>());
+    const Expected<Shape<T>> f = translated(fixed, far), m = translated(mover, far);
+    if (f && m) {
+      fixed = f.value();
+      mover = m.value();
+    }
+  } else if (*rc::gen::inRange(0, 6) == 0) {
+    // Far from the origin, sometimes: both moved by the same (exact) large offset.
     const V far(T(1e6 + 64 * grid(-4, 4)), T(-1e6));
     fixed = moved(fixed, far);
     mover = moved(mover, far);

@@ -51,10 +51,11 @@ std::vector<T> gen_transform_values() {
 template <Scalar T>
 std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, const std::string& test) {
   using laws::Law;
-  // Both placed by one transform, or each by its own.
-  const auto placed_pair = [=] {
-    auto [a, b] = gen_pair<T>(ka, kb);
-    const double s = scale_of_pair(a, b);
+  // Both placed by one transform, or each by its own. A pair far across the axis it meets along
+  // (gen_pair's `across`) gets transforms at its size, which mostly keep it there.
+  const auto placed_pair = [=](bool across) {
+    auto [a, b] = gen_pair<T>(ka, kb, std::nullopt, across);
+    const double s = across ? size_of_pair(a, b) : scale_of_pair(a, b);
     a = with_child_transforms(a, s);
     b = with_child_transforms(b, s);
     const Transform<T> xa = gen_transform<T>(s);
@@ -62,9 +63,9 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     return std::tuple{a, xa, b, xb};
   };
   using PairLaw = laws::Verdict (*)(const Shape<T>&, const Transform<T>&, const Shape<T>&, const Transform<T>&);
-  const auto pair_law = [=](PairLaw f) -> std::function<void()> {
+  const auto pair_law = [=](PairLaw f, bool far_across = false) -> std::function<void()> {
     return [=] {
-      const auto [a, xa, b, xb] = placed_pair();
+      const auto [a, xa, b, xb] = placed_pair(far_across && *rc::gen::inRange(0, 4) == 0);
       const laws::Verdict v = f(a, xa, b, xb);
       judge_case(v, [&] { return placed_case<T>(law, a, xa, b, xb, v, test); });
     };
@@ -75,7 +76,7 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
     case Law::PlacedOutputs:
       return pair_law(&laws::placed_outputs<T>);
     case Law::PlacedResolution:
-      return pair_law(&laws::placed_resolution<T>);
+      return pair_law(&laws::placed_resolution<T>, true);
     case Law::PlacedSeparation:
       return pair_law(&laws::placed_separation<T>);
     case Law::PlacedFeatureIds:

@@ -252,7 +252,8 @@ def check_image_pins(problems):
 
 
 def fuzz_targets():
-    return sorted(p.stem for p in (ROOT / "fuzz/targets").glob("*.cpp"))
+    """collide's fuzz targets and the judge's (judge/fuzz): build.sh copies the seeds of both."""
+    return sorted(p.stem for d in ("fuzz/targets", "judge/fuzz/targets") for p in (ROOT / d).glob("*.cpp"))
 
 
 def check_seeds(problems):

@@ -113,7 +113,7 @@ REPORT_SCHEMAS: dict[str, dict] = {
     "properties": {"status": str, "seed": int, "cases": int, "disagreements": int, "failures": int,
                    "counterexamples": list,
                    "properties": ("list of", {"name": str, "law": str, "pair": str, "scalar": str, "cases": int,
-                                              "disagreements": int, "disagreement_ceiling": int, "status": str,
+                                              "disagreements": int, "status": str,
                                               "reason": str, "case_file": str})},
     "fuzz": {"failures": int, "interrupted": bool,
              "targets": ("list of", {"target": str, "seconds": (int, float), "executions": int,

@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// The judge's subprocess protocol, version 1 (docs/judge.md), for adapters written in
+// The judge's subprocess protocol, version 2 (docs/judge.md), for adapters written in
 // JavaScript: `node adapter.js <library>` loads adapters/<library>.js and serves the judge on
 // stdin/stdout. Every number crosses as little-endian IEEE-754 binary64 bytes, bit for bit.
 //
@@ -9,11 +9,15 @@
 //   answer(a, b): a and b are { kind, values } (our stored values); returns
 //     { overlap, push: [x, y] or null, storedA: { kind, values }, storedB: { kind, values } },
 //     or { unsupported: true }; a throw is reported as the library's exception
-//   reproducer(a, b, query, exact): the source of a standalone program in the library's own API
+//   contains(s, p): optional (with "contains" among its queries): p is [x, y]; returns
+//     { inside, stored: { kind, values }, point: [x, y] as the library holds it }, or
+//     { unsupported: true }
+//   reproducer(a, b, query, exact, p): the source of a standalone program in the library's own
+//     API (for "contains", b is null and p the point)
 'use strict';
 
 const KINDS = ['circle', 'aabb', 'obb', 'capsule', 'polygon'];
-const PROTOCOL = 1;
+const PROTOCOL = 2;
 
 function frame(type, payload) {
   const head = Buffer.alloc(5);
@@ -75,6 +79,45 @@ function answerBatch(adapter, payload) {
   return Buffer.concat(parts);
 }
 
+function errorBytes(e) {
+  const msg = Buffer.from(String(e && e.message ? e.message : e).slice(0, 500), 'utf8');
+  const h = Buffer.alloc(3);
+  h.writeUInt8(1, 0);
+  h.writeUInt16LE(msg.length, 1);
+  return [h, msg];
+}
+
+// A point batch: per input a shape and a point; per result the answer, the stored shape and
+// the stored point.
+function answerPoints(adapter, payload) {
+  const n = payload.readUInt32LE(0);
+  let off = 4;
+  const parts = [Buffer.alloc(4)];
+  parts[0].writeUInt32LE(n, 0);
+  for (let i = 0; i < n; i++) {
+    let s;
+    [s, off] = readShape(payload, off);
+    const p = [payload.readDoubleLE(off), payload.readDoubleLE(off + 8)];
+    off += 16;
+    let r;
+    try {
+      r = adapter.contains(s, p);
+    } catch (e) {
+      parts.push(...errorBytes(e));
+      continue;
+    }
+    if (r.unsupported) {
+      parts.push(Buffer.from([2]));
+      continue;
+    }
+    const pt = Buffer.alloc(16);
+    pt.writeDoubleLE(r.point[0], 0);
+    pt.writeDoubleLE(r.point[1], 8);
+    parts.push(Buffer.from([0, r.inside ? 1 : 0]), shapeBytes(r.stored), pt);
+  }
+  return Buffer.concat(parts);
+}
+
 function valueOfBits(hex) {
   const b = Buffer.alloc(8);
   b.writeBigUInt64LE(BigInt('0x' + hex), 0);
@@ -101,10 +144,14 @@ async function main() {
       pending = pending.subarray(4 + len);
       if (type === 'B') {
         process.stdout.write(frame('R', answerBatch(adapter, payload)));
+      } else if (type === 'C') {
+        process.stdout.write(frame('R', answerPoints(adapter, payload)));
       } else if (type === 'P') {
         const req = JSON.parse(payload.toString('utf8'));
         const shape = (s) => ({ kind: s.kind, values: s.bits.map(valueOfBits) });
-        const source = adapter.reproducer(shape(req.a), shape(req.b), req.query, req.exact);
+        const source = req.p
+          ? adapter.reproducer(shape(req.a), null, req.query, req.exact, req.p.map(valueOfBits))
+          : adapter.reproducer(shape(req.a), shape(req.b), req.query, req.exact);
         process.stdout.write(frame('S', Buffer.from(JSON.stringify({ ext: 'js', source }), 'utf8')));
       } else if (type === 'Q') {
         process.exit(0);

@@ -77,6 +77,17 @@ console.log('exact:   ' + ${JSON.stringify(exact)});
 `;
 }
 
+// The closing lines of a containment reproducer: the library's answer and the exact one.
+function reportContains(insideExpr, exact) {
+  return `try {
+  console.log('library: contains ' + (${insideExpr}));
+} catch (e) {
+  console.log('library: threw ' + (e && e.message ? e.message : e));
+}
+console.log('exact:   ' + ${JSON.stringify(exact)});
+`;
+}
+
 // The installed version of a package (read from its package.json, which some packages do not
 // export to require()).
 function packageVersion(name) {
@@ -98,4 +109,4 @@ function ccw(pts) {
   return area < 0 ? pts.slice().reverse() : pts;
 }
 
-module.exports = { packageVersion, obbCorners, aabbCorners, points, polygonOf, lit, prelude, report, ccw };
+module.exports = { packageVersion, obbCorners, aabbCorners, points, polygonOf, lit, prelude, report, reportContains, ccw };

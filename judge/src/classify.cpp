@@ -10,7 +10,7 @@
 namespace collide::judge {
 
 std::string_view name(Query q) noexcept {
-  return q == Query::Overlap ? "overlap" : "push";
+  return q == Query::Overlap ? "overlap" : q == Query::Push ? "push" : "contains";
 }
 
 std::string_view name(Touching t) noexcept {
@@ -67,6 +67,7 @@ std::optional<Shape<double>> to_shape(const ShapeData& d) {
 std::string class_key(const Input& input, const Judgement& j) {
   std::string key = std::string(name(j.outcome)) + "." + j.what;
   if (j.severity != Severity::None) key += "." + std::string(name(j.severity));
+  if (input.ask == Query::Contains) return key + "." + std::string(name(input.a.kind)) + "_point";
   return key + "." + std::string(name(input.a.kind)) + "_" + std::string(name(input.b.kind));
 }
 
@@ -97,6 +98,18 @@ double rounding_allowance(const Contract& c, double scale) {
 double size_of(const Shape<double>& s) {
   const Aabb<double> box = std::visit([](const auto& x) { return bounds(x); }, s);
   return std::max(box.max().x() - box.min().x(), box.max().y() - box.min().y());
+}
+
+/// A wrong answer or crash on shapes outside the sizes the library is documented for (its
+/// contract's min_size and max_size) is the convention "below_min_size" or "above_max_size".
+void outside_design_sizes(const Contract& c, double smallest, double largest, Judgement& j) {
+  const char* what = c.min_size > 0 && smallest < c.min_size  ? "below_min_size"
+                     : c.max_size > 0 && largest > c.max_size ? "above_max_size"
+                                                              : nullptr;
+  if (what == nullptr) return;
+  j.outcome = Outcome::Convention;
+  j.severity = Severity::None;
+  j.what = what;
 }
 
 bool declares(const Info& info, Query q) {
@@ -169,17 +182,76 @@ Judgement judge_push(const Shape<double>& a, const Shape<double>& b, Vec2<double
 Judgement judge_pair(const Info& info, const Shape<double>& a, const Shape<double>& b, const Answer& answer,
                      double band, double rnd);
 
+/// A containment answer on the stored shape and point: the contract's touching convention for
+/// points on the boundary, its band for points within it of the boundary.
+Judgement judge_contains(const Contract& c, const Shape<double>& s, Vec2<double> p, bool got, double band, double rnd) {
+  Judgement j;
+  j.query = Query::Contains;
+  const bool exact = oracle::contains(s, p);
+  if (got == exact) return j;
+  j.what = got ? "false_inside" : "false_outside";
+  const int boundary = oracle::compare_boundary_distance(s, p, 0);
+  j.expected = std::string("contains ") + (exact ? "true" : "false") +
+               (boundary == 0 ? ", on the boundary" : ", off the boundary");
+  j.got = std::string("contains ") + (got ? "true" : "false");
+  const Touching t = c.contains_touching.value_or(c.touching);
+  if (boundary == 0 && (t == Touching::Either || (t == Touching::Apart && !got))) {
+    j.outcome = Outcome::Convention;
+    j.what = "touching";
+    return j;
+  }
+  if (band > 0 && oracle::compare_boundary_distance(s, p, band) <= 0) {
+    j.outcome = Outcome::Convention;
+    j.what = "within_band";
+    return j;
+  }
+  j.outcome = Outcome::Wrong;
+  j.severity = boundary == 0                                              ? Severity::Touching
+               : oracle::compare_boundary_distance(s, p, band + rnd) <= 0 ? Severity::Rounding
+                                                                          : Severity::Gross;
+  return j;
+}
+
 }  // namespace
 
-Judgement judge_answer(const Info& info, const Input& /*input*/, const Answer& answer) {
+Judgement judge_answer(const Info& info, const Input& input, const Answer& answer) {
   if (answer.status == Status::Unsupported) return unjudged("unsupported_input");
+  if (answer.status == Status::Hung) {
+    Judgement j;
+    j.outcome = Outcome::Crash;
+    j.query = input.ask;
+    j.what = "hang";
+    j.got = answer.error.substr(0, 200);
+    j.expected = "an answer within the time-out";
+    return j;
+  }
   if (answer.status == Status::Threw) {
     Judgement j;
     j.outcome = Outcome::Crash;
     j.what = "exception";
+    j.query = input.ask;
     j.got = "threw: " + answer.error.substr(0, 200);
     j.expected = "an answer";
     return j;
+  }
+  if (input.ask == Query::Contains) {
+    const std::optional<Shape<double>> s = to_shape(answer.stored_a);
+    if (!s) return unjudged("stored_not_a_shape");
+    if (!std::isfinite(answer.stored_p.x()) || !std::isfinite(answer.stored_p.y()))
+      return unjudged("stored_point_not_finite");
+    const Contract& c = info.contract;
+    double scale = std::max(std::fabs(answer.stored_p.x()), std::fabs(answer.stored_p.y()));
+    for (double v : answer.stored_a.values) scale = std::max(scale, std::fabs(v));
+    const double band = c.contains_tol_abs.value_or(c.tol_abs) + c.tol_rel * scale;
+    try {
+      Judgement j = judge_contains(c, *s, answer.stored_p, answer.contains, band, rounding_allowance(c, scale));
+      if (j.outcome == Outcome::Wrong) outside_design_sizes(c, size_of(*s), size_of(*s), j);
+      return j;
+    } catch (const oracle::InvalidInput&) {
+      return unjudged("oracle_invalid_input");
+    } catch (const oracle::Unsupported&) {
+      return unjudged("oracle_unsupported");
+    }
   }
   const std::optional<Shape<double>> a = to_shape(answer.stored_a), b = to_shape(answer.stored_b);
   if (!a || !b) return unjudged("stored_not_a_shape");
@@ -189,12 +261,8 @@ Judgement judge_answer(const Info& info, const Input& /*input*/, const Answer& a
   const double rnd = rounding_allowance(c, scale);
   try {
     Judgement j = judge_pair(info, *a, *b, answer, band, rnd);
-    if ((j.outcome == Outcome::Wrong || j.outcome == Outcome::Crash) && c.min_size > 0 &&
-        std::min(size_of(*a), size_of(*b)) < c.min_size) {
-      j.outcome = Outcome::Convention;
-      j.severity = Severity::None;
-      j.what = "below_min_size";
-    }
+    if (j.outcome == Outcome::Wrong || j.outcome == Outcome::Crash)
+      outside_design_sizes(c, std::min(size_of(*a), size_of(*b)), std::max(size_of(*a), size_of(*b)), j);
     return j;
   } catch (const oracle::InvalidInput&) {
     return unjudged("oracle_invalid_input");

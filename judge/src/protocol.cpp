@@ -1,4 +1,4 @@
-// The subprocess adapter: protocol version 1 over pipes (protocol.hpp, docs/judge.md).
+// The subprocess adapter: protocol version 2 over pipes (protocol.hpp, docs/judge.md).
 
 #include "collide/judge/protocol.hpp"
 
@@ -125,6 +125,8 @@ Info parse_hello(const std::string& text) {
         info.queries.push_back(Query::Overlap);
       else if (s == "push")
         info.queries.push_back(Query::Push);
+      else if (s == "contains")
+        info.queries.push_back(Query::Contains);
       else
         throw AdapterError("hello: unknown query '" + s + "'");
     }
@@ -144,6 +146,19 @@ Info parse_hello(const std::string& text) {
     info.contract.push_moves = m == "a" ? PushMoves::A : PushMoves::B;
     info.contract.source = field(c, "source").get<std::string>();
     info.contract.min_size = c.value("min_size", 0.0);
+    info.contract.max_size = c.value("max_size", 0.0);
+    if (c.contains("contains")) {
+      const auto& pc = c.at("contains");
+      if (pc.contains("touching")) {
+        const std::string pt = pc.at("touching").get<std::string>();
+        info.contract.contains_touching =
+            pt == "overlap"  ? Touching::Overlap
+            : pt == "apart"  ? Touching::Apart
+            : pt == "either" ? Touching::Either
+                             : throw AdapterError("hello: contains.touching must be overlap, apart or either");
+      }
+      if (pc.contains("tol_abs")) info.contract.contains_tol_abs = pc.at("tol_abs").get<double>();
+    }
     info.mapping = field(j, "mapping").get<std::string>();
   } catch (const nlohmann::json::exception& e) {
     throw AdapterError(std::string("hello: bad field: ") + e.what());
@@ -260,14 +275,21 @@ bool Subprocess::receive(char& type, std::string& payload, std::chrono::millisec
 }
 
 bool Subprocess::round_trip(std::span<const Input> inputs, std::span<Answer> out, std::chrono::milliseconds timeout) {
+  // Every input of one call asks the same: pairs go in a 'B' batch, points in a 'C' batch.
+  const bool points = !inputs.empty() && inputs.front().ask == Query::Contains;
   std::string batch;
   put_u32(batch, static_cast<std::uint32_t>(inputs.size()));
   for (const Input& in : inputs) {
     put_shape(batch, in.a);
-    put_shape(batch, in.b);
+    if (points) {
+      put_f64(batch, in.p.x());
+      put_f64(batch, in.p.y());
+    } else {
+      put_shape(batch, in.b);
+    }
   }
   try {
-    send('B', batch);
+    send(points ? 'C' : 'B', batch);
   } catch (const AdapterError&) {
     return false;
   }
@@ -282,7 +304,12 @@ bool Subprocess::round_trip(std::span<const Input> inputs, std::span<Answer> out
     const auto status = r.uint(1);
     if (status > 2) throw AdapterError("protocol: unknown status " + std::to_string(status));
     a.status = static_cast<Status>(status);
-    if (a.status == Status::Ok) {
+    if (a.status == Status::Ok && points) {
+      a.contains = r.uint(1) != 0;
+      a.stored_a = r.shape();
+      const double px = r.f64(), py = r.f64();
+      a.stored_p = Vec2<double>(px, py);
+    } else if (a.status == Status::Ok) {
       a.overlap = r.uint(1) != 0;
       a.has_push = r.uint(1) != 0;
       const double px = r.f64(), py = r.f64();
@@ -298,6 +325,25 @@ bool Subprocess::round_trip(std::span<const Input> inputs, std::span<Answer> out
 }
 
 void Subprocess::answer(std::span<const Input> inputs, std::span<Answer> out) {
+  // Pairs and points travel in messages of their own; each group keeps its inputs' order.
+  std::vector<std::size_t> groups[2];
+  for (std::size_t i = 0; i < inputs.size(); ++i) groups[inputs[i].ask == Query::Contains].push_back(i);
+  for (const auto& g : groups) {
+    if (g.size() == inputs.size()) {
+      answer_group(inputs, out);
+      return;
+    }
+    if (g.empty()) continue;
+    std::vector<Input> in;
+    in.reserve(g.size());
+    for (std::size_t i : g) in.push_back(inputs[i]);
+    std::vector<Answer> got(g.size());
+    answer_group(in, got);
+    for (std::size_t k = 0; k < g.size(); ++k) out[g[k]] = std::move(got[k]);
+  }
+}
+
+void Subprocess::answer_group(std::span<const Input> inputs, std::span<Answer> out) {
   const auto batch_timeout = timeout_ + std::chrono::milliseconds(2 * inputs.size());
   if (round_trip(inputs, out, batch_timeout)) return;
   // Isolate the input that hung or killed the adapter: a fresh process, one input at a time
@@ -309,7 +355,7 @@ void Subprocess::answer(std::span<const Input> inputs, std::span<Answer> out) {
     const bool died = waitpid(pid_, nullptr, WNOHANG) == pid_;
     if (died) pid_ = -1;
     out[i] = Answer{};
-    out[i].status = Status::Threw;
+    out[i].status = died ? Status::Threw : Status::Hung;
     out[i].error = died ? "adapter died on this input" : "hang: no answer within the time-out";
     stop();
     start();
@@ -329,10 +375,11 @@ std::pair<std::string, std::string> Subprocess::reproducer(const Input& input, Q
     for (double v : d.values) bits.push_back(bits_hex(v));
     return nlohmann::json{{"kind", std::string(name(d.kind))}, {"bits", bits}};
   };
-  const nlohmann::json req = {{"query", query == Query::Overlap ? "overlap" : "push"},
-                              {"exact", exact},
-                              {"a", shape_json(input.a)},
-                              {"b", shape_json(input.b)}};
+  nlohmann::json req = {{"query", std::string(name(query))}, {"exact", exact}, {"a", shape_json(input.a)}};
+  if (input.ask == Query::Contains)
+    req["p"] = {bits_hex(input.p.x()), bits_hex(input.p.y())};
+  else
+    req["b"] = shape_json(input.b);
   send('P', req.dump());
   char type = 0;
   std::string payload;

@@ -1,7 +1,9 @@
 # Script mode (cmake -P): builds and runs a separate consumer project the way a game would.
 # MODE find_package: install this build into a fresh prefix, check its pkg-config file, then
 #   configure tests/consumer/app against that prefix only, build and run it (collide::collide and
-#   collide::compiled).
+#   collide::compiled); then tests/consumer/judge_app (find_package(collide COMPONENTS judge): an
+#   in-process adapter judged for a fixed number of cases, its report's keys checked), and the
+#   component judge installed alone.
 # MODE fetch_content: configure tests/consumer/fetch_app, which takes lib/ with FetchContent from
 #   this checkout, build and run it, install it and check that nothing of collide was installed.
 # Inputs: MODE, COLLIDE_BUILD_DIR, COLLIDE_SOURCE_DIR, WORK_DIR, APP_GENERATOR, APP_CXX_COMPILER,
@@ -60,6 +62,43 @@ if(MODE STREQUAL "find_package")
   if(instantiated)
     list(JOIN instantiated "\n  " text)
     message(FATAL_ERROR "consumer: the object instantiates queries collide::compiled holds:\n  ${text}")
+  endif()
+
+  # The judge (component judge): a project judging its own circle code, then the report's keys.
+  set(judge_build "${WORK_DIR}/judge-build")
+  set(judge_out "${WORK_DIR}/judge-reports")
+  run_step("configure the judge consumer (find_package(collide COMPONENTS judge))"
+    ${CMAKE_COMMAND} -S "${COLLIDE_SOURCE_DIR}/tests/consumer/judge_app" -B "${judge_build}" ${configure_args}
+      "-DCMAKE_PREFIX_PATH=${prefix}" "-DCOLLIDE_EXPECTED_PREFIX=${prefix}")
+  run_step("build the judge consumer" ${CMAKE_COMMAND} --build "${judge_build}")
+  run_step("run the judge consumer" "${judge_build}/collide_judge_consumer" "${judge_out}")
+  file(READ "${judge_out}/tiny-circles.json" report)
+  foreach(key IN ITEMS library version counts contract mapping seed cases seconds)
+    string(JSON value ERROR_VARIABLE missing GET "${report}" ${key})
+    if(missing)
+      message(FATAL_ERROR "consumer: the judge's report has no '${key}': ${missing}")
+    endif()
+  endforeach()
+  string(JSON library GET "${report}" library)
+  string(JSON agree GET "${report}" counts agree)
+  if(NOT library STREQUAL "tiny-circles" OR agree LESS 1000)
+    message(FATAL_ERROR "consumer: the judge's report names '${library}' with ${agree} answers agreeing")
+  endif()
+  message(STATUS "consumer: the judge's report tiny-circles.json: ${agree} answers agree")
+  run_step("the installed driver runs" "${prefix}/bin/collide_judge" --list)
+
+  # The component alone: the judge's files, none of the library's.
+  run_step("install the judge component alone" ${CMAKE_COMMAND} --install "${COLLIDE_BUILD_DIR}"
+    --prefix "${WORK_DIR}/judge-only" --component judge)
+  foreach(f IN ITEMS include/collide/judge/judge.hpp include/collide/oracle/oracle.hpp
+                     include/collide/laws/codec.hpp bin/collide_judge share/cmake/collide/collide-judge.cmake
+                     share/cmake/collide/collideJudgeTargets.cmake)
+    if(NOT EXISTS "${WORK_DIR}/judge-only/${f}")
+      message(FATAL_ERROR "consumer: --component judge did not install ${f}")
+    endif()
+  endforeach()
+  if(EXISTS "${WORK_DIR}/judge-only/include/collide/collide.hpp")
+    message(FATAL_ERROR "consumer: --component judge installed the library's headers too")
   endif()
 elseif(MODE STREQUAL "fetch_content")
   run_step("configure the FetchContent consumer"

@@ -108,6 +108,7 @@ void check_pair_queries() {
       keep(overlap_tolerance(a, b));
       keep(rounding_tolerance(a, b));
       keep(resolve_margin(a, b, T(1)));
+      keep(resolve_margin(a, b, T(1), Vec2<T>(T(0.6), T(0.8))));
     });
     // The same queries on local shapes placed by transforms: a rotated one, a translation, and
     // the identity, in both orders (compounds are imaged child by child, never copied).
@@ -127,6 +128,7 @@ void check_pair_queries() {
         keep(overlap_tolerance(a, x, b, xb));
         keep(rounding_tolerance(a, x, b, xb));
         keep(resolve_margin(a, x, b, xb, T(1)));
+        keep(resolve_margin(a, x, b, xb, T(1), Vec2<T>(T(0.6), T(0.8))));
       });
       expect_none("shape casts", [&] {
         const Vec2<T> v(T(-4), T(1)), still(0, 0);

@@ -112,7 +112,7 @@ TYPED_TEST(CourseNotes, AabbResolutionPicksTheShortestOfFourCandidates) {
   // for the rounding of the cast to T).
   const V v = resolve(a, b);
   EXPECT_LT(v.x(), T(-1));
-  EXPECT_GE(double(v.x()), -1 - 2 * resolve_margin(a, b, 1.0));
+  EXPECT_GE(double(v.x()), -1 - 2 * resolve_margin(a, b, 1.0, V(1, 0)));
   EXPECT_EQ(v.y(), T(0));
   EXPECT_FALSE(overlaps(translated(a, v).value(), b));
   const auto c = contact(a, b);

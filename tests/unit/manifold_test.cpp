@@ -552,7 +552,7 @@ TEST(ManifoldRegression, CircleBesideASegmentNearItsEndTakesTheSegmentsNormal) {
       ASSERT_TRUE(c.has_value()) << "pair " << k;
       const Vec2c d = widen(segment.b()) - widen(segment.a());
       EXPECT_NEAR(std::fabs(c->normal.dot(d.normalized())), 0.0, 1e-9) << "pair " << k << ": not across the segment";
-      const Vec2<double> push = -c->normal * (c->depth + resolve_margin(ball, segment, c->depth));
+      const Vec2<double> push = -c->normal * (c->depth + resolve_margin(ball, segment, c->depth, c->normal));
       const Circle<double> moved = *Circle<double>::make(ball.center() + push, ball.radius());
       EXPECT_FALSE(overlaps(moved, segment)) << "pair " << k << ": still overlapping after the push";
     }

@@ -72,7 +72,7 @@ void check_config(T ha, T hb, T x, T gap, bool contained) {
   if (gap <= 0 && !contained && std::fabs(Calc(gap)) > 8 * tol) {
     // Pushing a by |gap| along -x separates, so the minimum translation is at most that:
     // a longer push means the least-penetration axis was missed.
-    const Calc margin = 256 * resolve_margin(a, b, -Calc(gap));
+    const Calc margin = 256 * resolve_margin(a, b, -Calc(gap), c->normal);
     EXPECT_LE(Calc(c->depth), -Calc(gap) + 8 * tol);
     EXPECT_LE(v.template cast<Calc>().norm(), -Calc(gap) + margin);
     // And |resolve| is the contact depth plus a margin, no more.

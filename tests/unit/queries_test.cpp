@@ -160,7 +160,7 @@ TYPED_TEST(Queries, ContactNormalIsUnitWhenCentresAreTinyApart) {
   EXPECT_FALSE(overlaps(translated(point, v).value(), big));
   EXPECT_GE(double(v.norm()), 0x1p20);
   // At most depth + margin (the old normal, 6.5e-8 too long, overshot by 0.07 at this radius).
-  EXPECT_LE(double(v.norm()), 0x1p20 * (1 + 4 * eps) + double(resolve_margin(point, big, T(0x1p20))));
+  EXPECT_LE(double(v.norm()), 0x1p20 * (1 + 4 * eps) + double(resolve_margin(point, big, T(0x1p20), c->normal)));
 }
 
 TYPED_TEST(Queries, CompoundPushClearsAChildLyingOnThePushLine) {

@@ -517,8 +517,44 @@ TYPED_TEST(Transforms, GroundBoxLeavesTheBallWithinTheMarginOfItsOwnScale) {
     for (const double gap : {ground_gap<T>(box), ground_gap<T>(obb)}) {
       EXPECT_GT(gap, 0) << "half-width " << w;
       EXPECT_LE(gap, 1e-5) << "half-width " << w;
-      // The documented margin, for the ball against this ground, bounds the gap.
-      EXPECT_LE(gap, 2 * resolve_margin(Circle<T>(V(0, T(0.4)), T(0.5)), box, 0.1)) << "half-width " << w;
+      // The documented margin, for the ball against this ground pushed up, bounds the gap.
+      EXPECT_LE(gap, 2 * resolve_margin(Circle<T>(V(0, T(0.4)), T(0.5)), box, 0.1, V(0, -1))) << "half-width " << w;
+    }
+  }
+}
+
+/// A float ball of radius 0.5 sunk 0.01 into a ground box (top face y = 0) far along the ground,
+/// stored there or placed there by a translation. The push is along y, which a move rounds at the
+/// ball's own magnitude (about 1); x, across the push, is not moved at all, so the margin must not
+/// grow with it. A gap above 1e-5 at x = 1e5 (or above twice the documented margin further out)
+/// means the margin grew with the coordinate across the push.
+TEST(TransformRegression, FloatBallFarAlongTheGroundRestsOnIt) {
+  using V = Vec2<float>;
+  for (const float x : {1e5f, 1e6f, 1e7f}) {
+    const Aabb<float> ground(V(x - 10, -1), V(x + 10, 0));
+    const Circle<float> ball(V(x, 0.49f), 0.5f);
+    const V push = resolve(ball, ground);
+    EXPECT_EQ(push.x(), 0.0f) << "x = " << x;
+    const Circle<float> after = translated(ball, push).value();
+    EXPECT_FALSE(overlaps(after, ground)) << "x = " << x << ": the pushed ball still overlaps";
+    const double gap = double(after.center().y()) - 0.5;  // exact
+    EXPECT_GT(gap, 0) << "x = " << x;
+    EXPECT_LE(gap, 2 * resolve_margin(ball, ground, 0.01, V(0, -1))) << "x = " << x;
+    if (x == 1e5f) {
+      EXPECT_LE(gap, 1e-5) << "x = " << x;
+    }
+
+    // The same ball stored at x = 0 and placed at x by its transform, whose position a move rounds.
+    const Circle<float> local(V(0, 0.49f), 0.5f);
+    const Transform<float> at = Transform<float>::make_translation(V(x, 0)).value();
+    const V placed_push = resolve(local, at, ground, Transform<float>());
+    const Transform<float> moved = at.moved(placed_push).value();
+    EXPECT_FALSE(overlaps(local, moved, ground, Transform<float>())) << "x = " << x << ": still overlapping";
+    const double placed_gap = double(moved.position().y()) + 0.49 - 0.5;  // exact
+    EXPECT_GT(placed_gap, 0) << "x = " << x;
+    EXPECT_LE(placed_gap, 2 * resolve_margin(local, at, ground, Transform<float>(), 0.01, V(0, -1))) << "x = " << x;
+    if (x == 1e5f) {
+      EXPECT_LE(placed_gap, 1e-5) << "x = " << x;
     }
   }
 }

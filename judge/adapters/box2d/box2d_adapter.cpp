@@ -4,7 +4,9 @@
 // 0.005, b2_polygonRadius = 2 b2_linearSlop: every polygon's skin), b2_polygon_shape.h/.cpp
 // (Set: 3..8 points, convex hull, welding closer than linearSlop / 2; SetAsBox by half extents,
 // centre and angle). Everything is float: values are rounded to float, and the rounded values
-// (with the polygon's vertices read back) are the stored geometry.
+// (with the polygon's vertices read back) are the stored geometry. Containment:
+// b2Shape::TestPoint (b2_polygon_shape.cpp: outside when dot(normal, p - vertex) > 0, so the
+// sharp polygon's boundary is inside and its skin is not; b2_circle_shape.cpp: |p - c|^2 <= r^2).
 
 #include "box2d/box2d_adapter.hpp"
 
@@ -61,6 +63,11 @@ bool settable(const ShapeData& d) {
     return 2 * float(d.values[2]) >= b2_linearSlop && 2 * float(d.values[3]) >= b2_linearSlop;
   const std::vector<b2Vec2> pts = corners(d);
   if (pts.size() < 3 || pts.size() > b2_maxPolygonVertices) return false;
+  // b2PolygonShape::Set's hull and centroid take float cross products of the vertices, which
+  // overflow beyond 2^63 and then trip its asserts: coordinates up to 2^48 keep them finite (the
+  // area test below is then meaningful), far beyond the manual's 50 m.
+  for (const b2Vec2& v : pts)
+    if (!(std::fabs(v.x) <= 0x1p48f && std::fabs(v.y) <= 0x1p48f)) return false;
   for (std::size_t i = 0; i < pts.size(); ++i)
     for (std::size_t j = i + 1; j < pts.size(); ++j)
       if (b2DistanceSquared(pts[i], pts[j]) < b2_linearSlop * b2_linearSlop) return false;
@@ -120,11 +127,11 @@ Info Box2dAdapter::info() const {
   i.version = std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
               std::to_string(b2_version.revision) + " (Debian libbox2d-dev 2.4.1)";
   i.kinds = {ShapeKind::Circle, ShapeKind::Aabb, ShapeKind::Obb, ShapeKind::Polygon};
-  i.queries = {Query::Overlap, Query::Push};
+  i.queries = {Query::Overlap, Query::Push, Query::Contains};
   // The band: both skins, the reference-face tolerance of b2CollidePolygons (k_tol = 0.1
   // b2_linearSlop, by which its depth may exceed the least one), GJK's 10 b2_epsilon, and 32
   // float ulps of the scale. Sizes: the manual's units section keeps moving objects between
-  // 0.1 and 10 metres.
+  // 0.1 and 10 metres and static shapes up to 50 metres.
   i.contract = {"float32",
                 Touching::Overlap,
                 2 * b2_polygonRadius + 0.1 * b2_linearSlop + 10 * b2_epsilon,
@@ -133,18 +140,33 @@ Info Box2dAdapter::info() const {
                 "b2_distance.cpp b2TestOverlap (distance minus radii < 10 b2_epsilon); b2_common.h "
                 "b2_polygonRadius 0.01 (each polygon's skin); b2_collide_polygon.cpp k_tol = 0.1 b2_linearSlop; "
                 "b2WorldManifold normal from A to B, separation < 0 on penetration; float; the manual: moving "
-                "objects 0.1 to 10 m (min_size 0.1)",
-                0.1};
+                "objects 0.1 to 10 m, static shapes up to 50 m (min_size 0.1, max_size 50)",
+                0.1,
+                50.0};
   i.mapping =
       "values rounded to float; circle -> b2CircleShape; aabb -> b2PolygonShape::Set(4 corners); obb -> "
       "SetAsBox(hx, hy, centre, atan2(uy, ux)); polygon -> Set(vertices); identity transforms; stored: m_vertices "
       "(the sharp polygon; its 0.01 skin is the declared tolerance); push: -normal * deepest penetration of the "
-      "world manifold";
+      "world manifold; contains: TestPoint(identity, point rounded to float)";
   return i;
 }
 
 Answer Box2dAdapter::answer(const Input& in) const {
   Answer out;
+  if (in.ask == Query::Contains) {
+    if (!settable(in.a)) {
+      out.status = Status::Unsupported;
+      return out;
+    }
+    const Built a = build(in.a);
+    out.stored_a = stored(a);
+    const b2Vec2 p(float(in.p.x()), float(in.p.y()));
+    out.stored_p = Vec2<double>(p.x, p.y);
+    b2Transform id;
+    id.SetIdentity();
+    out.contains = base(a)->TestPoint(id, p);
+    return out;
+  }
   if (!settable(in.a) || !settable(in.b)) {
     out.status = Status::Unsupported;
     return out;
@@ -195,6 +217,14 @@ std::string Box2dAdapter::reproducer(const Input& in, Query q, const std::string
     }
     return t;
   };
+  if (q == Query::Contains) {
+    s += "int main() {\n" + shape(in.a, "a");
+    s += "  const b2Vec2 p(float(" + repro::cpp(in.p.x()) + "), float(" + repro::cpp(in.p.y()) + "));\n";
+    s += "  b2Transform id;\n  id.SetIdentity();\n";
+    s += "  std::printf(\"library: contains %s\", a.TestPoint(id, p) ? \"true\" : \"false\");\n";
+    s += "  std::printf(\"\\nexact:   %s\\n\", " + repro::cpp_string(exact) + ");\n}\n";
+    return s;
+  }
   const bool ca = in.a.kind == ShapeKind::Circle, cb = in.b.kind == ShapeKind::Circle;
   s += "int main() {\n" + shape(in.a, "a") + shape(in.b, "b");
   s += "  b2Transform id;\n  id.SetIdentity();\n  const bool o = b2TestOverlap(&a, 0, &b, 0, id, id);\n";

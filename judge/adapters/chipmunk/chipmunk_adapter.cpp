@@ -6,6 +6,8 @@
 // chipmunk_types.h (cpFloat is double). Touching and any tolerance are not documented: touching
 // is either, the band the rounding of double arithmetic. Shapes hang on a static body at the
 // origin, so world and local coordinates coincide (an identity transform is exact).
+// Containment: cpShapePointQuery (cpShape.h: the distance to the nearest surface point,
+// negative inside), inside when it is <= 0.
 
 #include "chipmunk/chipmunk_adapter.hpp"
 
@@ -99,7 +101,7 @@ Info ChipmunkAdapter::info() const {
   i.library = "chipmunk";
   i.version = std::string(cpVersionString) + " (Debian libchipmunk-dev)";
   i.kinds = {ShapeKind::Circle, ShapeKind::Aabb, ShapeKind::Obb, ShapeKind::Capsule, ShapeKind::Polygon};
-  i.queries = {Query::Overlap, Query::Push};
+  i.queries = {Query::Overlap, Query::Push, Query::Contains};
   i.contract = {"float64",
                 Touching::Either,
                 0.0,
@@ -110,13 +112,22 @@ Info ChipmunkAdapter::info() const {
   i.mapping =
       "shapes on a static body at the origin; circle -> cpCircleShapeNew(r, centre); aabb -> cpBoxShapeNew2(bb, 0); "
       "capsule -> cpSegmentShapeNew(a, b, r); obb -> cpPolyShapeNew(4 corners computed in double, radius 0); "
-      "polygon -> cpPolyShapeNew(vertices, radius 0); overlap: count > 0; push: normal * deepest distance";
+      "polygon -> cpPolyShapeNew(vertices, radius 0); overlap: count > 0; push: normal * deepest distance; "
+      "contains: cpShapePointQuery(shape, point, &info) <= 0";
   return i;
 }
 
 Answer ChipmunkAdapter::answer(const Input& in) const {
-  const ShapePtr a = build(in.a), b = build(in.b);
   Answer out;
+  if (in.ask == Query::Contains) {
+    const ShapePtr a = build(in.a);
+    out.stored_a = stored(in.a, a.get());
+    out.stored_p = in.p;
+    cpPointQueryInfo info;
+    out.contains = cpShapePointQuery(a.get(), cpv(in.p.x(), in.p.y()), &info) <= 0;
+    return out;
+  }
+  const ShapePtr a = build(in.a), b = build(in.b);
   out.stored_a = stored(in.a, a.get());
   out.stored_b = stored(in.b, b.get());
   const cpContactPointSet set = cpShapesCollide(a.get(), b.get());
@@ -155,6 +166,14 @@ std::string ChipmunkAdapter::reproducer(const Input& in, Query q, const std::str
       }
     }
   };
+  if (q == Query::Contains) {
+    s += shape(in.a, "a") + "  cpShapeCacheBB(a);\n  cpPointQueryInfo info;\n";
+    s += "  const cpFloat d = cpShapePointQuery(a, cpv(" + repro::cpp(in.p.x()) + ", " + repro::cpp(in.p.y()) +
+         "), &info);\n";
+    s += "  std::printf(\"library: contains %s (distance %.17g)\", d <= 0 ? \"true\" : \"false\", d);\n";
+    s += "  std::printf(\"\\nexact:   %s\\n\", " + repro::cpp_string(exact) + ");\n}\n";
+    return s;
+  }
   s += shape(in.a, "a") + shape(in.b, "b");
   s += "  cpShapeCacheBB(a);\n  cpShapeCacheBB(b);\n  const cpContactPointSet set = cpShapesCollide(a, b);\n";
   s += "  std::printf(\"library: overlap %s\", set.count > 0 ? \"true\" : \"false\");\n";

@@ -4,10 +4,12 @@
 // decomposed and the pieces' overlapV summed), dist/utils.js (getSATTest maps to SAT.js),
 // dist/bodies/polygon.js (isConvex from its decomposition). Touching and the push vector are
 // SAT.js's: touching overlaps; subtracting response.overlapV from a's position separates. No
-// tolerance documented: the band is the rounding of double arithmetic.
+// tolerance documented: the band is the rounding of double arithmetic. Containment: the exported
+// pointInPolygon(point, polygon) (dist/intersect.js: SAT.js's pointInPolygon on each convex part,
+// a 1e-6 probe box) for polygons; circles have no exported point test (not asked).
 'use strict';
 const DC = require('detect-collisions');
-const { packageVersion, obbCorners, aabbCorners, points, lit, prelude, report } = require('../common.js');
+const { packageVersion, obbCorners, aabbCorners, points, lit, prelude, report, reportContains } = require('../common.js');
 
 const version = packageVersion('detect-collisions');
 const check2d = packageVersion('check2d');
@@ -48,6 +50,12 @@ function answer(a, b) {
   };
 }
 
+function contains(s, p) {
+  if (s.kind === 'capsule' || s.kind === 'circle') return { unsupported: true };
+  const A = build(s);
+  return { inside: DC.pointInPolygon({ x: p[0], y: p[1] }, A), stored: stored(s, A), point: p };
+}
+
 function source(s, name) {
   if (s.kind === 'circle') {
     const v = s.values.map(lit);
@@ -59,7 +67,15 @@ function source(s, name) {
   return `const ${name} = new Polygon({ x: 0, y: 0 }, [\n  ${pts},\n]);\n`;
 }
 
-function reproducer(a, b, query, exact) {
+function reproducer(a, b, query, exact, p) {
+  if (query === 'contains') {
+    return (
+      prelude('detect-collisions', version, `detect-collisions ${version}: pointInPolygon gives a wrong contains answer.`) +
+      "const { Polygon, pointInPolygon } = require('detect-collisions');\n" +
+      source(a, 'a') +
+      reportContains(`pointInPolygon({ x: ${lit(p[0])}, y: ${lit(p[1])} }, a)`, exact)
+    );
+  }
   return (
     prelude(
       'detect-collisions',
@@ -81,19 +97,21 @@ module.exports = {
     library: 'detect-collisions',
     version: `${version} (check2d ${check2d})`,
     kinds: ['circle', 'aabb', 'obb', 'polygon'],
-    queries: ['overlap', 'push'],
+    queries: ['overlap', 'push', 'contains'],
     contract: {
       scalar: 'float64',
       touching: 'overlap',
       tol_abs: 0,
       tol_rel: 2 ** -40,
       push_moves: 'b',
+      contains: { touching: 'either', tol_abs: 1.5e-6 },
       source:
-        "check2d dist/system.js checkCollision (SAT.js's tests and Response: touching overlaps; overlapV subtracted from a separates); no tolerance documented (band: double rounding)",
+        "check2d dist/system.js checkCollision (SAT.js's tests and Response: touching overlaps; overlapV subtracted from a separates); dist/intersect.js pointInPolygon (SAT.js pointInPolygon: a 1e-6 probe box, containment band 1.5e-6, boundary either); no tolerance documented (band: double rounding)",
     },
     mapping:
       'circle -> Circle(centre, r); aabb, obb -> Polygon at (0, 0) with the 4 corners (an OBB\'s computed in double); polygon -> Polygon at (0, 0); each inserted into a fresh System; stored: pos + calcPoints',
   },
   answer,
+  contains,
   reproducer,
 };

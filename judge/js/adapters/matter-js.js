@@ -7,10 +7,11 @@
 // when their gradients agree to 3 decimals), src/factory/Bodies.js (circle: a polygon of
 // ceil(max(10, min(25, r))) sides, its vertices written with toFixed(3) into a path), src/body/Body.js (setVertices recentres on the centroid).
 // No tolerance is documented for detection (slop is the resolver's): the band is the rounding
-// of double arithmetic.
+// of double arithmetic. Containment: src/geometry/Vertices.js contains(vertices, point) (outside
+// only when a cross product is > 0: the boundary is inside, unlike collides()).
 'use strict';
 const Matter = require('matter-js');
-const { packageVersion, points, lit, prelude, report } = require('../common.js');
+const { packageVersion, points, lit, prelude, report, reportContains } = require('../common.js');
 
 const version = packageVersion('matter-js');
 
@@ -49,6 +50,12 @@ function answer(a, b) {
   };
 }
 
+function contains(s, p) {
+  const A = build(s);
+  if (!A) return { unsupported: true };
+  return { inside: Matter.Vertices.contains(A.vertices, { x: p[0], y: p[1] }), stored: stored(A), point: p };
+}
+
 function source(s, name) {
   const v = s.values.map(lit);
   switch (s.kind) {
@@ -67,7 +74,16 @@ function source(s, name) {
   }
 }
 
-function reproducer(a, b, query, exact) {
+function reproducer(a, b, query, exact, p) {
+  if (query === 'contains') {
+    return (
+      prelude('matter-js', version, `matter-js ${version}: Matter.Vertices.contains gives a wrong contains answer.`) +
+      "const Matter = require('matter-js');\n" +
+      source(a, 'a') +
+      reportContains(`Matter.Vertices.contains(a.vertices, { x: ${lit(p[0])}, y: ${lit(p[1])} })`, exact) +
+      "console.log('stored a: ' + JSON.stringify(a.vertices.map((q) => [q.x, q.y])));\n"
+    );
+  }
   return (
     prelude('matter-js', version, `matter-js ${version}: Matter.Collision.collides gives a wrong ${query} answer.`) +
     "const Matter = require('matter-js');\n" +
@@ -86,20 +102,22 @@ module.exports = {
     library: 'matter-js',
     version,
     kinds: ['circle', 'aabb', 'obb', 'polygon'],
-    queries: ['overlap', 'push'],
+    queries: ['overlap', 'push', 'contains'],
     contract: {
       scalar: 'float64',
       touching: 'apart',
       tol_abs: 0,
       tol_rel: 2 ** -40,
       push_moves: 'a',
+      contains: { touching: 'overlap' },
       source:
-        'src/collision/Collision.js: collides() is null when the overlap is <= 0; penetration = normal * depth; src/collision/Resolver.js moves bodyA along +normal; no detection tolerance documented (band: double rounding); min_size 0.01: Bodies.circle writes its vertices with toFixed(3), so shapes under ten times that resolution are below the library\'s own design resolution',
+        'src/geometry/Vertices.js contains (the boundary is inside); src/collision/Collision.js: collides() is null when the overlap is <= 0; penetration = normal * depth; src/collision/Resolver.js moves bodyA along +normal; no detection tolerance documented (band: double rounding); min_size 0.01: Bodies.circle writes its vertices with toFixed(3), so shapes under ten times that resolution are below the library\'s own design resolution',
       min_size: 0.01,
     },
     mapping:
       'circle -> Bodies.circle (a polygon of 10..25 sides, vertices rounded to 3 decimals, judged as that polygon); aabb -> Bodies.rectangle; obb -> Bodies.rectangle with angle atan2(uy, ux); polygon -> Body.create({vertices, position: centroid}); stored: body.vertices',
   },
   answer,
+  contains,
   reproducer,
 };

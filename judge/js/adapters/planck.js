@@ -5,9 +5,11 @@
 // (every polygon carries the 0.01 skin m_radius; vertices closer than linearSlop / 2 are welded;
 // the convex hull is taken), BoxShape.ts (box by half extents, centre and angle). The skin is the
 // declared tolerance: up to 0.02 for two polygons, plus the rounding of double arithmetic.
+// Containment: Shape.testPoint(xf, p) (PolygonShape.ts: outside when dot(normal, p - vertex) > 0,
+// the sharp polygon closed, skin excluded; CircleShape.ts: distance^2 <= r^2).
 'use strict';
 const planck = require('planck');
-const { packageVersion, aabbCorners, points, lit, prelude, report } = require('../common.js');
+const { packageVersion, aabbCorners, points, lit, prelude, report, reportContains } = require('../common.js');
 
 const version = packageVersion('planck');
 
@@ -48,6 +50,12 @@ function answer(a, b) {
   };
 }
 
+function contains(s, p) {
+  const A = build(s);
+  if (!A) return { unsupported: true };
+  return { inside: A.testPoint(planck.Transform.identity(), planck.Vec2(p[0], p[1])), stored: stored(A), point: p };
+}
+
 function source(s, name) {
   const v = s.values.map(lit);
   const vec = ([x, y]) => `planck.Vec2(${lit(x)}, ${lit(y)})`;
@@ -63,7 +71,15 @@ function source(s, name) {
   }
 }
 
-function reproducer(a, b, query, exact) {
+function reproducer(a, b, query, exact, p) {
+  if (query === 'contains') {
+    return (
+      prelude('planck', version, `planck ${version}: Shape.testPoint gives a wrong contains answer.`) +
+      "const planck = require('planck');\n" +
+      source(a, 'a') +
+      reportContains(`a.testPoint(planck.Transform.identity(), planck.Vec2(${lit(p[0])}, ${lit(p[1])}))`, exact)
+    );
+  }
   return (
     prelude('planck', version, `planck ${version}: planck.testOverlap gives a wrong ${query} answer.`) +
     "const planck = require('planck');\n" +
@@ -80,7 +96,7 @@ module.exports = {
     library: 'planck',
     version,
     kinds: ['circle', 'aabb', 'obb', 'polygon'],
-    queries: ['overlap'],
+    queries: ['overlap', 'contains'],
     contract: {
       scalar: 'float64',
       touching: 'overlap',
@@ -88,11 +104,14 @@ module.exports = {
       tol_rel: 2 ** -40,
       push_moves: 'a',
       source:
-        'src/collision/Distance.ts testOverlap (distance minus radii < 10 EPSILON); src/Settings.ts polygonRadius 0.01 (each polygon\'s skin)',
+        'src/collision/Distance.ts testOverlap (distance minus radii < 10 EPSILON); shape testPoint (closed); src/Settings.ts polygonRadius 0.01 (each polygon\'s skin); docs/pages/api-conventions/units.md: moving shapes 0.1 to 10 m, static shapes up to 50 m (min_size 0.1, max_size 50)',
+      min_size: 0.1,
+      max_size: 50,
     },
     mapping:
       'circle -> CircleShape(centre, r); aabb -> PolygonShape(4 corners); obb -> BoxShape(hx, hy, centre, atan2(uy, ux)); polygon -> PolygonShape(vertices); identity transforms; stored: m_vertices (the sharp polygon; its 0.01 skin is the declared tolerance), a circle\'s centre and radius',
   },
   answer,
+  contains,
   reproducer,
 };

@@ -5,9 +5,10 @@
 // distance negative on penetration, normal1 points out of the first shape). No tolerance is
 // documented: the band is the rounding of f32 arithmetic (32 ulps of the scale). Values are
 // rounded to f32 before they reach the library; the rounded values are the stored geometry.
+// Containment: Shape.containsPoint(shapePos, shapeRot, point) (shape.d.ts), the point in f32.
 'use strict';
 const RAPIER = require('@dimforge/rapier2d-compat');
-const { packageVersion, obbCorners, points, lit, prelude, report, ccw } = require('../common.js');
+const { packageVersion, obbCorners, points, lit, prelude, report, reportContains, ccw } = require('../common.js');
 
 const version = packageVersion('@dimforge/rapier2d-compat');
 const f = Math.fround;
@@ -59,6 +60,14 @@ function answer(a, b) {
   return { overlap, push, storedA: A.stored, storedB: B.stored };
 }
 
+function contains(s, p) {
+  if (s.kind === 'capsule') return { unsupported: true };
+  const A = build(s);
+  if (!A || A.exact === false) return { unsupported: true };
+  const q = { x: f(p[0]), y: f(p[1]) };
+  return { inside: A.shape.containsPoint(A.pos, 0, q), stored: A.stored, point: [q.x, q.y] };
+}
+
 function source(s, name) {
   const v = s.values.map((x) => `Math.fround(${lit(x)})`);
   if (s.kind === 'circle') return `const ${name} = new RAPIER.Ball(${v[2]});\nconst ${name}Pos = { x: ${v[0]}, y: ${v[1]} };\n`;
@@ -68,11 +77,25 @@ function source(s, name) {
   return `const ${name} = new RAPIER.ConvexPolygon(new Float32Array([\n  ${built.map(lit).join(',\n  ')},\n]), true);\nconst ${name}Pos = { x: 0, y: 0 };\n`;
 }
 
-function reproducer(a, b, query, exact) {
+function reproducer(a, b, query, exact, p) {
+  if (query === 'contains') {
+    return (
+      prelude('@dimforge/rapier2d-compat', version, `rapier2d ${version}: Shape.containsPoint gives a wrong contains answer.`) +
+      "const RAPIER = require('@dimforge/rapier2d-compat');\n" +
+      'globalThis.rapierReady = globalThis.rapierReady || RAPIER.init();\n' +
+      'globalThis.rapierReady.then(() => {\n' +
+      source(a, 'a') +
+      `const p = { x: Math.fround(${lit(p[0])}), y: Math.fround(${lit(p[1])}) };\n` +
+      reportContains('a.containsPoint(aPos, 0, p)', exact) +
+      '});\n'
+    );
+  }
   return (
     prelude('@dimforge/rapier2d-compat', version, `rapier2d ${version}: Shape.intersectsShape / contactShape give a wrong ${query} answer.`) +
     "const RAPIER = require('@dimforge/rapier2d-compat');\n" +
-    'RAPIER.init().then(() => {\n' +
+    '// One initialisation shared by every part of the file, so the parts print in order.\n' +
+    'globalThis.rapierReady = globalThis.rapierReady || RAPIER.init();\n' +
+    'globalThis.rapierReady.then(() => {\n' +
     source(a, 'a') +
     source(b, 'b') +
     '// contactShape: distance < 0 on penetration, normal1 out of a: moving a by normal1 * distance separates.\n' +
@@ -87,7 +110,7 @@ module.exports = {
     library: 'rapier2d',
     version,
     kinds: ['circle', 'aabb', 'obb', 'polygon'],
-    queries: ['overlap', 'push'],
+    queries: ['overlap', 'push', 'contains'],
     contract: {
       scalar: 'float32',
       touching: 'either',
@@ -95,7 +118,7 @@ module.exports = {
       tol_rel: 2 ** -18,
       push_moves: 'a',
       source:
-        'dist/geometry/shape.d.ts (intersectsShape, contactShape), dist/geometry/contact.d.ts (distance < 0 on penetration, normal1 out of the first shape); f32; no tolerance documented (band: 32 f32 ulps of the scale); min_size 1e-3: parry works with absolute epsilons (concentric boxes of 2^-13 get a push a third of the exact one, of 1 the exact one), an undocumented design for metre-scale scenes, so smaller shapes are a convention here',
+        'dist/geometry/shape.d.ts (intersectsShape, contactShape, containsPoint), dist/geometry/contact.d.ts (distance < 0 on penetration, normal1 out of the first shape); f32; no tolerance documented (band: 32 f32 ulps of the scale); min_size 1e-3: parry works with absolute epsilons (concentric boxes of 2^-13 get a push a third of the exact one, of 1 the exact one), an undocumented design for metre-scale scenes, so smaller shapes are a convention here',
       min_size: 1e-3,
     },
     mapping:
@@ -103,5 +126,6 @@ module.exports = {
   },
   init: () => RAPIER.init(),
   answer,
+  contains,
   reproducer,
 };

@@ -5,10 +5,12 @@
 // touching overlaps; testCircleCircle is apart only when distance^2 > (r1 + r2)^2; circle and
 // polygon by Voronoi regions, apart only when dist > radius). No tolerance documented: the
 // band is the rounding of double arithmetic. Polygons are placed at pos (0, 0) with their
-// world points, so SAT.js stores our values as given.
+// world points, so SAT.js stores our values as given. Containment: pointInCircle (distance^2 <=
+// r^2, closed) and pointInPolygon, which tests a 1e-6 box at the point (TEST_POINT in SAT.js,
+// aInB): a point within about 1.5e-6 of an edge may be outside, a boundary point either.
 'use strict';
 const SAT = require('sat');
-const { packageVersion, obbCorners, aabbCorners, points, lit, prelude, report, ccw } = require('../common.js');
+const { packageVersion, obbCorners, aabbCorners, points, lit, prelude, report, reportContains, ccw } = require('../common.js');
 
 const version = packageVersion('sat');
 
@@ -50,6 +52,14 @@ function answer(a, b) {
   };
 }
 
+function contains(s, p) {
+  if (s.kind === 'capsule') return { unsupported: true };
+  const S = build(s);
+  const v = new SAT.Vector(p[0], p[1]);
+  const inside = s.kind === 'circle' ? SAT.pointInCircle(v, S) : SAT.pointInPolygon(v, S);
+  return { inside, stored: stored(s, S), point: p };
+}
+
 function source(s, name) {
   if (s.kind === 'circle') {
     const v = s.values.map(lit);
@@ -61,7 +71,17 @@ function source(s, name) {
   return `const ${name} = new SAT.Polygon(new SAT.Vector(0, 0), [\n  ${pts},\n]);\n`;
 }
 
-function reproducer(a, b, query, exact) {
+function reproducer(a, b, query, exact, p) {
+  if (query === 'contains') {
+    const fn = a.kind === 'circle' ? 'pointInCircle' : 'pointInPolygon';
+    return (
+      prelude('sat', version, `SAT.js ${version}: SAT.${fn} gives a wrong contains answer.`) +
+      "const SAT = require('sat');\n" +
+      source(a, 'a') +
+      `const p = new SAT.Vector(${lit(p[0])}, ${lit(p[1])});\n` +
+      reportContains(`SAT.${fn}(p, a)`, exact)
+    );
+  }
   return (
     prelude('sat', version, `SAT.js ${version}: SAT.${test(a, b)} gives a wrong ${query} answer.`) +
     "const SAT = require('sat');\n" +
@@ -78,19 +98,21 @@ module.exports = {
     library: 'sat',
     version,
     kinds: ['circle', 'aabb', 'obb', 'polygon'],
-    queries: ['overlap', 'push'],
+    queries: ['overlap', 'push', 'contains'],
     contract: {
       scalar: 'float64',
       touching: 'overlap',
       tol_abs: 0,
       tol_rel: 2 ** -40,
       push_moves: 'b',
+      contains: { touching: 'either', tol_abs: 1.5e-6 },
       source:
-        'README.md (Response.overlapV: subtracted from the position of a, they no longer collide); SAT.js isSeparatingAxis and testCircleCircle (touching overlaps); no tolerance documented (band: double rounding)',
+        'SAT.js pointInPolygon (a 1e-6 box at the point, TEST_POINT: containment band 1.5e-6, boundary either) and pointInCircle (closed); README.md (Response.overlapV: subtracted from the position of a, they no longer collide); SAT.js isSeparatingAxis and testCircleCircle (touching overlaps); no tolerance documented (band: double rounding)',
     },
     mapping:
       'circle -> SAT.Circle(centre, r); aabb, obb -> SAT.Polygon at (0, 0) with the 4 corners (an OBB\'s computed in double), counter-clockwise; polygon -> SAT.Polygon at (0, 0), counter-clockwise; stored: pos + calcPoints',
   },
   answer,
+  contains,
   reproducer,
 };

@@ -98,62 +98,95 @@ std::optional<bool> moved_overlaps(const A& a, const Vec2<scalar_of_t<A>>& v, co
 }
 
 /// The margin formula with its magnitudes given: s_pair the computation's scale (the largest
-/// coordinate the depth was computed from), s_moved the largest coordinate of the moved shape's
-/// stored values (what is rounded to T when it moves).
+/// coordinate the depth was computed from), s_along the moved shape's stored magnitudes along the
+/// push (moved_along(): what rounding them to T can shift it by along the push, over eps_T / 2).
 template <Scalar T>
-Calc margin_of(Calc s_pair, Calc s_moved, Calc depth) noexcept {
+Calc margin_of(Calc s_pair, Calc s_along, Calc depth) noexcept {
   return 4 * kOverlapErrorFactor * kUnitRoundoff * s_pair +
-         8 * Calc(std::numeric_limits<T>::epsilon()) * (s_moved + depth) + 16 * kSmallestDouble +
+         8 * Calc(std::numeric_limits<T>::epsilon()) * (s_along + depth) + 16 * kSmallestDouble +
          2 * Calc(std::numeric_limits<T>::denorm_min());
 }
 
-/// The largest stored magnitude that moving s rounds to T: its box's coordinates and, for a
-/// compound, the position of each child placed by a transform (a move shifts that position).
+/// The largest absolute coordinate of a box per axis (x, y).
+template <class T>
+Vec2c axis_scale(const Aabb<T>& b) noexcept {
+  return widen(b.min()).cwiseAbs().cwiseMax(widen(b.max()).cwiseAbs());
+}
+
+/// The largest stored magnitude per axis (x, y) that moving s rounds to T: its box's coordinates
+/// and, for a compound, the position of each child placed by a transform (a move shifts that
+/// position).
 template <AnyShape S>
-Calc moved_scale(const S& s) {
+Vec2c moved_scale(const S& s) {
   return visit_shape(s, [](const auto& c) {
-    Calc m = scale_of(bounds(c));
+    Vec2c m = axis_scale(bounds(c));
     if constexpr (is_compound_v<decltype(c)>) {
       for (std::size_t i = 0; c.has_child_transforms() && i < c.children().size(); ++i) {
-        m = std::max(m, widen(c.child_transform(i).position()).cwiseAbs().maxCoeff());
+        m = m.cwiseMax(Vec2c(widen(c.child_transform(i).position()).cwiseAbs()));
       }
     }
     return m;
   });
 }
 
+/// |n_x| S_x + |n_y| S_y for the push direction n and the per-axis magnitudes S = moved_scale():
+/// a move by v rounds a coordinate on axis i by at most eps_T / 2 |c_i + v_i|, and not at all when
+/// v_i = 0, which shifts the moved shape along n by at most |n_x| err_x + |n_y| err_y. Each |n_i|
+/// is taken at most 1, so the sum never exceeds S_x + S_y (the bound over all directions).
+inline Calc moved_along(const Vec2c& scale, const Vec2c& n) noexcept {
+  return std::min(std::fabs(n.x()), Calc(1)) * scale.x() + std::min(std::fabs(n.y()), Calc(1)) * scale.y();
+}
+
 }  // namespace detail
 
-/// The margin resolve() adds beyond the computed depth, from the magnitudes that round:
-/// 4 * 64 * 2^-53 * S (four times the relative part of rounding_tolerance: the depth is computed
-/// in double from both shapes' coordinates, S as in rounding_tolerance), plus 8 eps_T (S_a +
-/// depth), where S_a is the largest absolute coordinate of bounds(a) alone, or of a compound
-/// child's position when larger (detail::moved_scale()): it covers rounding a's moved coordinates
-/// (each within S_a + depth) to T, and does not grow with b's extent. Plus 16
-/// subnormal units of double and two of T for rounding near zero (a push along a diagonal moves
-/// each coordinate by a whole unit: sqrt(2) units in all), plus 2 placement_tolerance of each
-/// shape (a compound with child transforms is imaged once for the depth and once for the test).
-/// No 2^-500 floor: tiny shapes are decided after exact rescaling, so their depths are
-/// relative-accurate, and a push of 2^-500 would collapse a subnormal polygon.
+/// The margin resolve() adds beyond the computed depth when it pushes a along -normal, from the
+/// magnitudes that round: 4 * 64 * 2^-53 * S (four times the relative part of rounding_tolerance:
+/// the depth is computed in double from both shapes' coordinates, S as in rounding_tolerance), plus
+/// 8 eps_T (|n_x| S_x + |n_y| S_y + depth), n = normal, where S_x and S_y are the largest absolute
+/// x and y coordinates of bounds(a) alone, or of a compound child's position when larger
+/// (detail::moved_scale()): moving a rounds each coordinate on axis i to T within eps_T / 2 of its
+/// moved magnitude (at most S_i + |n_i| (depth + margin)) and leaves an axis the push does not move
+/// exact, so a shifts along the push by at most the sum of |n_i| times that. The term grows with
+/// a's coordinates along the push, not across it, and not with b's extent. Plus 16 subnormal
+/// units of double and two of T for rounding near zero (a push along a diagonal moves each
+/// coordinate by a whole unit: sqrt(2) units in all), plus 2 placement_tolerance of each shape (a
+/// compound with child transforms is imaged once for the depth and once for the test). No 2^-500
+/// floor: tiny shapes are decided after exact rescaling, so their depths are relative-accurate,
+/// and a push of 2^-500 would collapse a subnormal polygon.
+///
+/// normal: the unit push direction, as contact(a, b) returns it. resolve() evaluates this with
+/// its own normal in double, which the normal rounded to T matches within a relative eps_T.
+template <AnyShape A, AnyShape B>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc resolve_margin(const A& a, const B& b, Calc depth,
+                                                                            const Vec2<scalar_of_t<A>>& normal) {
+  using T = scalar_of_t<A>;
+  const Calc along = detail::moved_along(detail::moved_scale(a), widen(normal));
+  const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
+  return detail::margin_of<T>(s, along, depth) + 2 * (placement_tolerance(a) + placement_tolerance(b));
+}
+
+/// resolve_margin(a, b, depth, normal) for the worst direction: S_x + S_y in place of
+/// |n_x| S_x + |n_y| S_y, so at least the margin of every push direction.
 template <AnyShape A, AnyShape B>
 Calc resolve_margin(const A& a, const B& b, Calc depth) {
   using T = scalar_of_t<A>;
-  const Calc sa = detail::moved_scale(a);
+  const Calc along = detail::moved_along(detail::moved_scale(a), Vec2c(1, 1));
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
-  return detail::margin_of<T>(s, sa, depth) + 2 * (placement_tolerance(a) + placement_tolerance(b));
+  return detail::margin_of<T>(s, along, depth) + 2 * (placement_tolerance(a) + placement_tolerance(b));
 }
 
 namespace detail {
 
 /// resolve() on concrete shapes, stored or placed: the push in T. s_moved is the largest stored
-/// magnitude of a that a move rounds; extra is added to the margin (the placements' bound);
+/// magnitude of a per axis that a move rounds; extra is added to the margin (the placements' bound);
 /// still_overlaps(v) tests a moved by v (nullopt when the move has no representation in T).
 template <Scalar T, class A, class B, class Moved>
-Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& still_overlaps) {
+Vec2<T> resolve_as(const A& ca, const B& cb, const Vec2c& s_moved, Calc extra, Moved&& still_overlaps) {
   if (!overlaps_concrete(ca, cb)) return Vec2<T>::Zero();
   const Calc s_pair = std::max(scale_of(bounds(ca)), scale_of(bounds(cb)));
   constexpr bool compound = is_compound_v<A> || is_compound_v<B>;
-  // A push is at most about the shapes' extent, 2 S.
+  // A push is at most about the shapes' extent, 2 S. The shadows are across the push, so the
+  // rounding of a move counts in every direction here (s_pair, not moved_along()).
   const Calc shadow_tol = margin_of<T>(s_pair, s_pair, 2 * s_pair) + extra;
   Vec2c best_n(1, 0);
   Calc best_t = std::numeric_limits<Calc>::infinity();
@@ -168,7 +201,8 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
       }
     });
   });
-  Calc margin = margin_of<T>(s_pair, s_moved, best_t) + extra;
+  const Calc along = moved_along(s_moved, best_n);
+  Calc margin = margin_of<T>(s_pair, along, best_t) + extra;
   Vec2<T> v = round_toward_zero<T>(-best_n * (best_t + margin));
   // The moved shape is tested: for subnormal shapes of very different sizes the rounded depth
   // can fall short by more than the margin.
@@ -185,7 +219,8 @@ Vec2<T> resolve_as(const A& ca, const B& cb, Calc s_moved, Calc extra, Moved&& s
 
 /// Minimum translation of a that separates it from b (the shortest push,
 /// as the course notes resolve penetration, generalised to every pair): zero if they do not overlap; otherwise -normal
-/// * (depth + margin), so a moved by it no longer overlaps b, strictly (margin: resolve_margin(), doubled up to 8
+/// * (depth + margin), so a moved by it no longer overlaps b, strictly (margin: resolve_margin(a, b, depth, normal),
+/// which grows with a's coordinates along the push only; doubled up to 8
 /// times while the moved shape, rounded to T, still tests as overlapping: for subnormal shapes of very different
 /// sizes the rounded depth can fall short of the margin).
 ///

@@ -150,23 +150,48 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> std::optional<Contact<sc
   });
 }
 
-/// The margin resolve(a, xa, b, xb) adds (at most this): resolve_margin()'s formula on the world
-/// images, with S_a the larger of bounds(a, xa)'s coordinates and |xa's position|_inf (the move
-/// rounds the position to T), plus 2 (transform_tolerance(a, xa) + transform_tolerance(b, xb))
-/// (the depth is computed on one image and the moved shape is another). resolve_margin(a, b,
-/// depth) for two identities.
+namespace detail {
+
+/// The per-axis magnitudes that moving a placed by xa rounds to T: the largest absolute x and y of
+/// bounds(a, xa) and of xa's position (Transform::moved rounds the position).
+template <AnyShape A>
+Vec2c placed_moved_scale(const A& a, const Transform<scalar_of_t<A>>& xa) {
+  return axis_scale(bounds(a, xa)).cwiseMax(Vec2c(widen(xa.position()).cwiseAbs()));
+}
+
+}  // namespace detail
+
+/// The margin resolve(a, xa, b, xb) adds when it pushes along -normal (at most this):
+/// resolve_margin()'s formula on the world images, with S_x and S_y the larger of bounds(a, xa)'s
+/// coordinates and of xa's position on each axis (the move rounds the position to T), plus
+/// 2 (transform_tolerance(a, xa) + transform_tolerance(b, xb)) (the depth is computed on one image
+/// and the moved shape is another). resolve_margin(a, b, depth, normal) for two identities.
+template <AnyShape A, AnyShape B>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc
+resolve_margin(const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb,
+               Calc depth, const Vec2<scalar_of_t<A>>& normal) {
+  if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth, normal);
+  const Vec2c sa = detail::placed_moved_scale(a, xa);
+  const Calc s = std::max(sa.maxCoeff(), detail::scale_of(bounds(b, xb)));
+  return detail::margin_of<scalar_of_t<A>>(s, detail::moved_along(sa, widen(normal)), depth) +
+         2 * overlap_tolerance(a, xa, b, xb);
+}
+
+/// resolve_margin(a, xa, b, xb, depth, normal) for the worst direction (S_x + S_y in place of
+/// |n_x| S_x + |n_y| S_y): at least the margin of every push direction.
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc resolve_margin(
     const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb, Calc depth) {
   if (xa.is_identity() && xb.is_identity()) return resolve_margin(a, b, depth);
-  const Calc sa = std::max(detail::scale_of(bounds(a, xa)), widen(xa.position()).cwiseAbs().maxCoeff());
-  const Calc s = std::max(sa, detail::scale_of(bounds(b, xb)));
-  return detail::margin_of<scalar_of_t<A>>(s, sa, depth) + 2 * overlap_tolerance(a, xa, b, xb);
+  const Vec2c sa = detail::placed_moved_scale(a, xa);
+  const Calc s = std::max(sa.maxCoeff(), detail::scale_of(bounds(b, xb)));
+  return detail::margin_of<scalar_of_t<A>>(s, detail::moved_along(sa, Vec2c(1, 1)), depth) +
+         2 * overlap_tolerance(a, xa, b, xb);
 }
 
 /// The world-space push that separates a (placed by xa) from b (placed by xb): a's transform
 /// moved by it (Transform::moved) no longer overlaps. Zero when they do not overlap. Margin: at most
-/// resolve_margin(a, xa, b, xb, depth); tested by moving a's transform only for polygons and
+/// resolve_margin(a, xa, b, xb, depth, normal); tested by moving a's transform only for polygons and
 /// compounds, as resolve() does.
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> resolve(
@@ -178,8 +203,8 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Vec2<scalar_of_t<A>> res
     return detail::with_placed(ca, xa, [&](const auto& pa) {
       return detail::visit_shape(b, [&](const auto& cb) {
         return detail::with_placed(cb, xb, [&](const auto& pb) {
-          const Calc s_moved =
-              std::max(detail::scale_of(detail::calc_bounds(pa)), widen(xa.position()).cwiseAbs().maxCoeff());
+          const Vec2c s_moved =
+              detail::axis_scale(detail::calc_bounds(pa)).cwiseMax(Vec2c(widen(xa.position()).cwiseAbs()));
           const auto still = [&](const Vec2<T>& v) -> std::optional<bool> {
             const Expected<Transform<T>> moved = xa.moved(v);
             if (!moved) return std::nullopt;

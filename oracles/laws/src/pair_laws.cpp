@@ -13,6 +13,7 @@ using detail::describe;
 using detail::documented_margin;
 using detail::farther_than;
 using detail::num;
+using detail::push_direction;
 using detail::vec;
 using detail::yes;
 
@@ -61,6 +62,29 @@ void allow_in_band(Verdict& v, const Shape<T>& a, const Shape<T>& b, double band
   }
 }
 
+/// Whether the library's overlap answer `got` for (a, b) is the oracle's on the shapes the
+/// library computed (computed_geometry(): the exact shapes, or the images of children placed by
+/// transforms), as it must be bit for bit; fails v otherwise. This is what makes an answer inside
+/// a placement's band a judged case rather than a counted one.
+template <Scalar T>
+bool agrees_on_computed(Verdict& v, bool got, const Shape<T>& a, const Shape<T>& b, const std::string& which) {
+  const bool computed = oracle::overlaps(detail::computed_geometry(a), detail::computed_geometry(b));
+  if (got == computed) return true;
+  fail(v, which + " overlaps " + yes(computed) + " (the oracle on the shapes the library computed)",
+       "overlaps " + yes(got), pair_text(a, b));
+  return false;
+}
+
+/// An overlap answer `got` differing from the oracle's on the exact shapes, where a compound's
+/// children placed by transforms round (overlap_tolerance() > 0): judged on the library's own
+/// images, then the exact pair within the placement's band. A disagreement, or a failure.
+template <Scalar T>
+void judge_placement_rounding(Verdict& v, bool got, const Shape<T>& a, const Shape<T>& b, const std::string& what) {
+  v.disagreement = true;
+  if (!agrees_on_computed(v, got, a, b, "the pair")) return;
+  allow_in_band(v, a, b, overlap_tolerance(a, b), what);
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -75,8 +99,8 @@ Verdict agreement(const Shape<T>& a, const Shape<T>& b) {
     if (got == exact) return;
     // Stored shapes are decided exactly (overlap_tolerance 0: any difference fails); a compound
     // whose children are placed by transforms may differ within its placement's band.
-    if (const double tol = overlap_tolerance(a, b); tol > 0) {
-      allow_in_band(v, a, b, tol, "overlaps " + yes(got) + ", exact " + yes(exact));
+    if (overlap_tolerance(a, b) > 0) {
+      judge_placement_rounding(v, got, a, b, "overlaps " + yes(got) + ", exact " + yes(exact));
       return;
     }
     v.disagreement = true;
@@ -167,13 +191,24 @@ Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t) {
              pair_text(a, b) + "; t = " + vec(t));
       return;
     }
-    // A rounded move: the moved pair is a different exact question; it must agree with the oracle,
-    // and an answer may change only where the unmoved pair was within the band plus the rounding.
-    // (Compounds with child transforms: each pair within its own overlap band.)
+    // A rounded move: the moved pair is a different exact question. Judged exactly, never
+    // counted: the move must be what translated() promises, and both answers the oracle's on the
+    // shapes the library computed (the stored shapes, or the images of children placed by
+    // transforms); an answer that changes is then explained by the rounding, which must also keep
+    // the unmoved pair within its band.
+    for (const auto& [s, m] : {std::pair{&a, &a2}, std::pair{&b, &b2}}) {
+      if (!detail::moved_as_promised(*s, *m, t)) {
+        fail(v, "each stored position plus t rounded once to T, every other value kept", "moved to " + describe(*m),
+             "from " + describe(*s) + "; t = " + vec(t));
+        return;
+      }
+    }
+    if (!agrees_on_computed(v, before, a, b, "unmoved pair") || !agrees_on_computed(v, after, a2, b2, "moved pair"))
+      return;
     const bool exact_after = oracle::overlaps(a2, b2);
     if (after != exact_after) {
-      if (const double tol = overlap_tolerance(a2, b2); tol > 0) {
-        allow_in_band(v, a2, b2, tol, "moved pair overlaps " + yes(after) + ", exact " + yes(exact_after));
+      if (overlap_tolerance(a2, b2) > 0) {
+        judge_placement_rounding(v, after, a2, b2, "moved pair overlaps " + yes(after) + ", exact " + yes(exact_after));
         return;
       }
       v.disagreement = true;
@@ -216,6 +251,7 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
       // An exact overlap the library missed is allowed only within the band (as in law agreement).
       if (oracle::overlaps(a, b)) {
         v.disagreement = true;
+        if (!agrees_on_computed(v, got, a, b, "the pair")) return;
         const double tol = overlap_tolerance(a, b);
         if (!oracle::within_band(a, b, tol))
           fail(v, "overlaps() true (exact overlap beyond the band " + num(tol) + ")", "no overlap, push " + vec(push),
@@ -257,7 +293,8 @@ Verdict resolution(const Shape<T>& a, const Shape<T>& b) {
     // Minimality: |v| <= depth + margin + slack, i.e. depth >= |v| - margin - slack. The slack is
     // the computed depth's own error (4 tolerances, as the contact law allows) and the rounding of
     // |v| here; v itself is rounded toward zero in T, so its rounding needs no allowance.
-    const double margin = documented_margin(a, b, len);
+    // The margin is judged along the push's own direction (resolve() pushes along -normal).
+    const double margin = documented_margin(a, b, len, push_direction(push));
     const double slack = 4 * rounding_tolerance(a, b) + 4 * 0x1p-53 * len;
     // The gap left: at most twice margin + slack (the moved coordinates' rounding to T lies
     // within the margin's own term), so a margin grown from the other shape's extent fails.
@@ -591,6 +628,8 @@ Verdict touching(const Shape<T>& a, const Shape<T>& b) {
       // (signed distance 0 is inside any band).
       if ((!ab || !ba) && tol > 0) {
         v.disagreement = true;
+        if (!agrees_on_computed(v, ab, a, b, "overlaps(a, b):") || !agrees_on_computed(v, ba, b, a, "overlaps(b, a):"))
+          return;
         v.account += "; within the band " + num(tol) + " of a compound's child transforms: allowed";
       } else if (!ab || !ba) {
         fail(v, "overlaps true both ways (exactly touching: signed distance 0)",
@@ -599,6 +638,8 @@ Verdict touching(const Shape<T>& a, const Shape<T>& b) {
       return;
     }
     if (ab == exact && ba == exact) return;
+    if (!agrees_on_computed(v, ab, a, b, "overlaps(a, b):") || !agrees_on_computed(v, ba, b, a, "overlaps(b, a):"))
+      return;
     if (oracle::within_band(a, b, tol)) {
       v.disagreement = true;
       v.account += "; within the band " + num(tol) + " (signed distance ~" + num(oracle::approx_signed_distance(a, b)) +

@@ -105,7 +105,13 @@ Verdict contains_law(const Shape<T>& s, const Vec2<T>& p) {
           allowed = allowed || (rounded && detail::near_boundary(oracle::placed(child.shape, child.transform), q, tol));
         }
         v.disagreement = true;
-        if (allowed) {
+        // Inside the band, judged exactly on the shapes the library computed.
+        const bool computed = oracle::contains(detail::computed_geometry(s), q);
+        if (allowed && got != computed) {
+          v.ok = false;
+          v.expected = "contains " + detail::yes(computed) + " (the oracle on the shapes the library computed)";
+          v.got = "contains " + detail::yes(got);
+        } else if (allowed) {
           v.account += "; within contains_tolerance " + num(tol) + " of a rounded boundary: allowed";
         } else {
           v.ok = false;

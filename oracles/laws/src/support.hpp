@@ -16,6 +16,8 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace collide::laws::detail {
@@ -129,41 +131,61 @@ bool is_compound(const Shape<T>& s) {
 
 /// resolve()'s margin as resolve_margin()'s documentation states it, written out here so that the
 /// resolution laws judge the library's margin instead of taking it from the library:
-/// 4 * 64 * 2^-53 * s (s the pair's scale) + 8 eps_T (s_moved + depth) (s_moved the largest
-/// magnitude that moving a rounds) + 16 subnormal units of double + 2 of T + extra (the
-/// placements' tolerances). Summed in the library's order, so that the two agree to the bit.
+/// 4 * 64 * 2^-53 * s (s the pair's scale) + 8 eps_T (|n_x| S_x + |n_y| S_y + depth) (n the unit
+/// push direction, each |n_i| taken at most 1; S_x, S_y the largest magnitudes per axis that moving
+/// a rounds) + 16 subnormal units of double + 2 of T + extra (the placements' tolerances). Summed
+/// in the library's order, so that the two agree to the bit.
 template <Scalar T>
-double documented_margin(double s, double s_moved, double depth, double extra) {
-  return 4 * 64 * 0x1p-53 * s + 8 * eps<T>() * (s_moved + depth) + 16 * 0x1p-1074 +
+double documented_margin(double s, const Vec2<double>& s_moved, const Vec2<double>& n, double depth, double extra) {
+  const double along = std::min(std::fabs(n.x()), 1.0) * s_moved.x() + std::min(std::fabs(n.y()), 1.0) * s_moved.y();
+  return 4 * 64 * 0x1p-53 * s + 8 * eps<T>() * (along + depth) + 16 * 0x1p-1074 +
          2 * double(std::numeric_limits<T>::denorm_min()) + extra;
 }
 
-/// documented_margin() of a stored pair: s_moved is a's box's scale or, for a compound, the
-/// position of a child placed by a transform when larger (a move shifts that position).
+/// The unit direction of a push, the direction its margin is judged along; (1, 1) (every axis in
+/// full) for a zero push.
 template <Scalar T>
-double documented_margin(const Shape<T>& a, const Shape<T>& b, double depth) {
-  const double s_a = ::collide::detail::scale_of(bounds(a));
-  double s_moved = s_a;
+Vec2<double> push_direction(const Vec2<T>& push) {
+  const Vec2<double> v = push.template cast<double>();
+  const double len = v.norm();
+  return len > 0 ? Vec2<double>(v / len) : Vec2<double>(1, 1);
+}
+
+/// The largest absolute x and y of a box.
+template <Scalar T>
+Vec2<double> axis_magnitudes(const Aabb<T>& box) {
+  return {std::max(std::fabs(double(box.min().x())), std::fabs(double(box.max().x()))),
+          std::max(std::fabs(double(box.min().y())), std::fabs(double(box.max().y())))};
+}
+
+/// documented_margin() of a stored pair: S_x, S_y are a's box's coordinates per axis or, for a
+/// compound, the position of a child placed by a transform when larger (a move shifts that
+/// position).
+template <Scalar T>
+double documented_margin(const Shape<T>& a, const Shape<T>& b, double depth, const Vec2<double>& n) {
+  Vec2<double> s_moved = axis_magnitudes(bounds(a));
   if (const auto* c = std::get_if<Compound<T>>(&a); c && c->has_child_transforms()) {
     for (std::size_t i = 0; i < c->children().size(); ++i) {
       const Vec2<T> p = c->child_transform(i).position();
-      s_moved = std::max({s_moved, std::fabs(double(p.x())), std::fabs(double(p.y()))});
+      s_moved.x() = std::max(s_moved.x(), std::fabs(double(p.x())));
+      s_moved.y() = std::max(s_moved.y(), std::fabs(double(p.y())));
     }
   }
-  const double s = std::max(s_a, ::collide::detail::scale_of(bounds(b)));
-  return documented_margin<T>(s, s_moved, depth, 2 * (placement_tolerance(a) + placement_tolerance(b)));
+  const double s = std::max(::collide::detail::scale_of(bounds(a)), ::collide::detail::scale_of(bounds(b)));
+  return documented_margin<T>(s, s_moved, n, depth, 2 * (placement_tolerance(a) + placement_tolerance(b)));
 }
 
-/// documented_margin() of a placed pair: s_moved is a's placed box's scale or its position when
-/// larger (a move shifts the transform's position).
+/// documented_margin() of a placed pair: S_x, S_y are a's placed box's coordinates per axis or its
+/// position's when larger (a move shifts the transform's position).
 template <Scalar T>
 double documented_margin(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb,
-                         double depth) {
-  if (xa.is_identity() && xb.is_identity()) return documented_margin(a, b, depth);
-  const double s_moved = std::max({::collide::detail::scale_of(bounds(a, xa)), std::fabs(double(xa.position().x())),
-                                   std::fabs(double(xa.position().y()))});
-  const double s = std::max(s_moved, ::collide::detail::scale_of(bounds(b, xb)));
-  return documented_margin<T>(s, s_moved, depth, 2 * overlap_tolerance(a, xa, b, xb));
+                         double depth, const Vec2<double>& n) {
+  if (xa.is_identity() && xb.is_identity()) return documented_margin(a, b, depth, n);
+  Vec2<double> s_moved = axis_magnitudes(bounds(a, xa));
+  s_moved.x() = std::max(s_moved.x(), std::fabs(double(xa.position().x())));
+  s_moved.y() = std::max(s_moved.y(), std::fabs(double(xa.position().y())));
+  const double s = std::max({s_moved.x(), s_moved.y(), ::collide::detail::scale_of(bounds(b, xb))});
+  return documented_margin<T>(s, s_moved, n, depth, 2 * overlap_tolerance(a, xa, b, xb));
 }
 
 /// The primitive has interior points (no zero radius, extent or width).
@@ -330,6 +352,93 @@ bool exact_move(const Shape<T>& s, const Shape<T>& moved, const Vec2<T>& t) {
     }
   }
   return true;
+}
+
+/// moved is what translated(p, t) promises for a primitive (translate.hpp): every stored
+/// position plus t rounded once to T, every other value bit for bit. A polygon rebuilt by its
+/// factory may start at another vertex, and one that rounding made not strictly convex keeps a
+/// subset of its moved vertices (their hull).
+template <Scalar T>
+bool moved_as_promised(const Primitive<T>& p, const Primitive<T>& moved, const Vec2<T>& t) {
+  if (p.index() != moved.index()) return false;
+  std::vector<Vec2<T>> p0, p1;
+  std::vector<T> o0, o1;
+  positions(p, p0, o0);
+  positions(moved, p1, o1);
+  std::vector<Vec2<T>> expected;
+  for (const Vec2<T>& q : p0) expected.push_back(Vec2<T>(q + t));
+  if (expected == p1 && o0 == o1) return true;
+  if (!std::holds_alternative<ConvexPolygon<T>>(p)) return false;
+  const auto before = [](const Vec2<T>& u, const Vec2<T>& w) {
+    return u.x() < w.x() || (u.x() == w.x() && u.y() < w.y());
+  };
+  std::sort(expected.begin(), expected.end(), before);
+  std::sort(p1.begin(), p1.end(), before);
+  if (p1.size() == expected.size()) return p1 == expected;
+  return std::includes(expected.begin(), expected.end(), p1.begin(), p1.end(), before);
+}
+
+/// moved is what translated(s, t) promises: a primitive as above; a compound child by child, a
+/// child placed by a transform keeping its values and moving the transform's position.
+template <Scalar T>
+bool moved_as_promised(const Shape<T>& s, const Shape<T>& moved, const Vec2<T>& t) {
+  if (s.index() != moved.index()) return false;
+  const auto* c = std::get_if<Compound<T>>(&s);
+  if (c == nullptr) {
+    return std::visit(
+        [&](const auto& x) {
+          using S = std::remove_cvref_t<decltype(x)>;
+          if constexpr (std::is_same_v<S, Compound<T>>) {
+            return false;
+          } else {
+            return moved_as_promised(Primitive<T>(x), Primitive<T>(std::get<S>(moved)), t);
+          }
+        },
+        s);
+  }
+  const auto& m = std::get<Compound<T>>(moved);
+  if (c->children().size() != m.children().size()) return false;
+  const auto same_values = [](const Primitive<T>& u, const Primitive<T>& w) {
+    return moved_as_promised(u, w, Vec2<T>(T(0), T(0)));  // + 0 rounds nothing
+  };
+  for (std::size_t i = 0; i < c->children().size(); ++i) {
+    const Transform<T> x = c->child_transform(i), y = m.child_transform(i);
+    if (x.is_identity() != y.is_identity()) return false;
+    if (x.is_identity() ? !moved_as_promised(c->children()[i], m.children()[i], t)
+                        : !(y.position() == Vec2<T>(x.position() + t) && y.rotation() == x.rotation() &&
+                            same_values(c->children()[i], m.children()[i])))
+      return false;
+  }
+  return true;
+}
+
+/// The shapes on which the library decides s placed by x, in double: s's values widened (exact)
+/// where nothing rounds, else the images it computes (detail/image.hpp: under a transform, and
+/// for the children of a compound that carry transforms). overlaps() is exact on these, so the
+/// library's answer must be the oracle's on them bit for bit; how far they lie from the exact
+/// placement is the placement's own contract (transform_tolerance()).
+template <Scalar T>
+Shape<double> computed_geometry(const Shape<T>& s, const Transform<T>& x = Transform<T>()) {
+  std::vector<Primitive<double>> parts;
+  const auto add = [&](const auto& p) { parts.emplace_back(::collide::detail::widened_shape(p)); };
+  std::visit(
+      [&](const auto& c) {
+        using S = std::remove_cvref_t<decltype(c)>;
+        if constexpr (std::is_same_v<S, Compound<T>>) {
+          if (x.is_identity()) {
+            ::collide::detail::for_each_primitive(c, add);
+          } else {
+            ::collide::detail::for_each_primitive(placed(c, x.pose()), add);
+          }
+        } else if (x.is_identity()) {
+          add(c);
+        } else {
+          ::collide::detail::with_image(c, x.pose(), add);
+        }
+      },
+      s);
+  if (!std::holds_alternative<Compound<T>>(s)) return std::visit([](auto& p) { return Shape<double>(p); }, parts[0]);
+  return Shape<double>(Compound<double>(std::move(parts)));
 }
 
 }  // namespace collide::laws::detail

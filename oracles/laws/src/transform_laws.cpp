@@ -20,6 +20,7 @@ using detail::documented_margin;
 using detail::num;
 using detail::placed_relation;
 using detail::placed_text;
+using detail::push_direction;
 using detail::quarter_turn;
 using detail::vec;
 using detail::yes;
@@ -276,7 +277,7 @@ Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape
     if (!primitives_only(a, b)) return;
     // The gap left and the push's length, against the documented margin.
     const double len = push.template cast<double>().norm();
-    const double margin = documented_margin(a, xa, b, xb, len);
+    const double margin = documented_margin(a, xa, b, xb, len, push_direction(push));
     const double slack = 4 * rounding_tolerance(a, xa, b, xb) + 4 * 0x1p-53 * len;
     j.require(oracle::compare_distance(after, pb, 2 * margin + 2 * slack) <= 0,
               "gap left <= 2 (margin " + num(margin) + " + slack " + num(slack) + ")",

@@ -16,6 +16,7 @@
 #include <concepts>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -28,7 +29,8 @@ using laws::ShapeData;
 
 /// What a query asks. Overlap: the boolean. Push: a translation of one shape that separates the
 /// pair (a minimum translation vector, or a contact normal times depth, as the library gives it).
-enum class Query : std::uint8_t { Overlap = 0, Push = 1 };
+/// Contains: whether a point lies in one shape (closed, under the contract's touching convention).
+enum class Query : std::uint8_t { Overlap = 0, Push = 1, Contains = 2 };
 
 /// How the library counts shapes that touch exactly (exact signed distance 0).
 enum class Touching : std::uint8_t {
@@ -57,6 +59,14 @@ struct Contract {
   /// for: a disagreement on a pair with a smaller shape (the larger side of its bounding box)
   /// is the convention "below_min_size", counted apart from wrong answers. 0: every size.
   double min_size = 0;
+  /// The largest shape the library is documented for (Box2D and planck: static shapes up to
+  /// 50 m): a disagreement on a pair with a larger shape is the convention "above_max_size". 0:
+  /// every size.
+  double max_size = 0;
+  /// Point containment's own convention where it differs from the pair queries' (a closed test
+  /// beside a strict one, a probe box instead of a point); unset: touching and tol_abs above.
+  std::optional<Touching> contains_touching = std::nullopt;
+  std::optional<double> contains_tol_abs = std::nullopt;
 };
 
 /// One adapter's description, from its handshake.
@@ -69,18 +79,21 @@ struct Info {
   std::string mapping;  ///< how each of our kinds becomes a library shape, one line per kind
 };
 
-/// One pair query: two of our shapes by their stored values (codec.hpp's field order; an OBB
-/// is cx cy hx hy ux uy with a unit axis).
+/// One input: two of our shapes by their stored values (codec.hpp's field order; an OBB is
+/// cx cy hx hy ux uy with a unit axis) for the pair queries, or one shape and a point.
 struct Input {
   ShapeData a;
-  ShapeData b;
+  ShapeData b;                 ///< pair queries only
+  Query ask = Query::Overlap;  ///< Overlap: the pair queries (and push, when declared); Contains: a and p
+  Vec2<double> p{0.0, 0.0};    ///< Contains: the point
 };
 
 /// What the library did with one input.
 enum class Status : std::uint8_t {
-  Ok = 0,          ///< it answered
-  Threw = 1,       ///< it raised an exception (message in `error`)
-  Unsupported = 2  ///< the adapter cannot build this input in the library (not judged)
+  Ok = 0,           ///< it answered
+  Threw = 1,        ///< it raised an exception (message in `error`)
+  Unsupported = 2,  ///< the adapter cannot build this input in the library (not judged)
+  Hung = 3          ///< no answer within the time-out (set by the driver, never sent by an adapter)
 };
 
 /// The library's answer to one input, with the shapes as it stored them (world coordinates,
@@ -92,7 +105,9 @@ struct Answer {
   Vec2<double> push{0.0, 0.0};
   ShapeData stored_a;
   ShapeData stored_b;
-  std::string error;  ///< Threw: the exception's message
+  bool contains = false;            ///< Contains: the library's answer
+  Vec2<double> stored_p{0.0, 0.0};  ///< Contains: the point as the library holds it
+  std::string error;                ///< Threw, Hung: the message
 };
 
 /// The driver's view of any adapter, in-process or subprocess.
@@ -133,7 +148,24 @@ concept InProcessAdapter = requires(A& a, const Input& in, Query q, const std::s
 namespace detail {
 /// Runs f() with SIGABRT, SIGSEGV, SIGFPE, SIGBUS and SIGILL turned into a false return (and
 /// the signal's name in `what`); true when f returned normally. Used around library calls only.
+/// Under an armed Watchdog, a call that runs past its limit is abandoned the same way, with
+/// `what` starting "hang".
 bool run_guarded(void (*f)(void*), void* ctx, std::string& what);
+
+/// Arms a hang time-out over a batch of run_guarded calls (one interval timer per batch, so a
+/// call costs no system call): a single call running longer than `limit` (wall clock, checked
+/// every tenth of it) is abandoned. Disarmed on destruction. One at a time per process.
+class Watchdog {
+ public:
+  explicit Watchdog(double limit_seconds);
+  ~Watchdog();
+  Watchdog(const Watchdog&) = delete;
+  Watchdog& operator=(const Watchdog&) = delete;
+};
+
+/// The in-process hang limit: 5 s (a library call takes microseconds; the margin is for a loaded
+/// machine).
+inline constexpr double kHangSeconds = 5.0;
 }  // namespace detail
 
 /// Wraps an in-process adapter as an Adapter.
@@ -143,6 +175,7 @@ class InProcess final : public Adapter {
   explicit InProcess(A adapter = A()) : a_(std::move(adapter)), info_(a_.info()) {}
   const Info& info() const override { return info_; }
   void answer(std::span<const Input> inputs, std::span<Answer> out) override {
+    const detail::Watchdog watchdog(detail::kHangSeconds);
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       struct Ctx {
         A* a;
@@ -164,7 +197,7 @@ class InProcess final : public Adapter {
           &ctx, what);
       if (!returned) {
         out[i] = Answer{};
-        out[i].status = Status::Threw;
+        out[i].status = what.rfind("hang", 0) == 0 ? Status::Hung : Status::Threw;
         out[i].error = what;
       }
     }
@@ -180,7 +213,7 @@ class InProcess final : public Adapter {
   Info info_;
 };
 
-/// "overlap", "push".
+/// "overlap", "push", "contains".
 std::string_view name(Query q) noexcept;
 /// "overlap", "apart", "either".
 std::string_view name(Touching t) noexcept;

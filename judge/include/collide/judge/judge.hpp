@@ -54,15 +54,61 @@ struct Judgement {
 /// Judges one answer against the exact oracle and the contract (queries: what the adapter declared).
 Judgement judge_answer(const Info& info, const Input& input, const Answer& answer);
 
-/// The class of a judgement that is not Agree: "<outcome>.<what>.<severity>.<kindA>_<kindB>".
+/// The class of a judgement that is not Agree: "<outcome>.<what>.<severity>.<kindA>_<kindB>"
+/// ("<kind>_point" for a point query).
 std::string class_key(const Input& input, const Judgement& j);
+
+/// A metamorphic law: an exact map of a pair input under which the library's answers must
+/// correspond (laws.cpp).
+enum class Relation : std::uint8_t {
+  Symmetry,     ///< the arguments swapped: the same overlap, the push negated
+  Translation,  ///< both shapes moved by (tx, ty), every sum exact: the same answers
+  Rotation      ///< both shapes mirrored (x -> -x) then turned by quarter turns: the answers mapped
+};
+
+/// "symmetry", "translation", "rotation".
+std::string_view name(Relation r) noexcept;
+
+/// One relation with its parameters.
+struct Map {
+  Relation relation = Relation::Symmetry;
+  double tx = 0, ty = 0;  ///< Translation
+  int quarter_turns = 0;  ///< Rotation: counter-clockwise, after the mirror
+  bool mirror = false;    ///< Rotation
+};
+
+/// The input under the map (for Translation, only when every moved value is the exact sum:
+/// nullopt otherwise, and for inputs the map does not take).
+std::optional<Input> apply(const Map& m, const Input& in);
+
+/// Two inputs of one batch related by a law: inputs[other] is apply(map, inputs[base]).
+struct Link {
+  std::size_t base = 0;
+  std::size_t other = 0;
+  Map map;
+};
+
+/// Judges the library's answers on two related inputs against each other: Agree when they
+/// correspond (or the law does not apply: the stored geometry of `other` is not exactly the
+/// mapped stored geometry of `base`, or either answer is not an answer); otherwise the class
+/// "<relation>_overlap" or "<relation>_push", Convention when both answers are within the
+/// contract alone (jb, jo: their own judgements), else Wrong with the worse severity.
+Judgement judge_law(const Info& info, const Map& m, const Input& base, const Answer& ab, const Judgement& jb,
+                    const Input& other, const Answer& ao, const Judgement& jo);
+
+/// Whether the law applied to this pair of answers (the stored geometry maps exactly).
+bool law_applies(const Map& m, const Answer& ab, const Answer& ao);
 
 /// Generates inputs for the kinds an adapter supports.
 class Generator {
  public:
   Generator(std::vector<ShapeKind> kinds, std::uint64_t seed);
-  /// Appends n inputs (each pair also in the other order, so n is rounded up to even).
-  void generate(std::size_t n, std::vector<Input>& out);
+  /// Also generate point inputs (a quarter of the inputs), and the laws' related inputs; the
+  /// scalar's significand bits choose translations that stay exact in it.
+  void configure(bool points, bool laws, int scalar_bits);
+  /// Appends about n inputs: each pair in both orders (a symmetry link), and for some pairs an
+  /// exactly translated and an exactly rotated or mirrored copy (their links appended to links).
+  void generate(std::size_t n, std::vector<Input>& out, std::vector<Link>* links = nullptr);
 
  private:
   ShapeData shape(ShapeKind k, double size, double cx, double cy);
@@ -71,8 +117,15 @@ class Generator {
   Input family_nudged(ShapeKind ka, ShapeKind kb);
   Input family_scaled(ShapeKind ka, ShapeKind kb);
   Input family_sliver(ShapeKind ka, ShapeKind kb);
+  Input family_point(ShapeKind k);
+  /// The pair snapped to a coarse grid and a translation by a power of two beyond every value
+  /// that keeps each sum exact in the scalar (nullopt when snapping spoils a shape).
+  std::optional<std::pair<Input, Map>> translated(const Input& in);
   std::vector<ShapeKind> kinds_;
   std::mt19937_64 rng_;
+  bool points_ = false;
+  bool laws_ = false;
+  int scalar_bits_ = 53;
 };
 
 /// A shape's values, validated: the Shape<double> the oracle judges, or nullopt when the
@@ -90,9 +143,12 @@ struct ClassRecord {
   Severity severity{};
   Query query{};
   std::uint64_t count = 0;
-  Input example;          ///< the smallest counterexample found (after shrinking)
-  Answer answer;          ///< the library's answer on it
-  Judgement judgement;    ///< its judgement
+  Input example;           ///< the smallest counterexample found (after shrinking)
+  Answer answer;           ///< the library's answer on it
+  Judgement judgement;     ///< its judgement
+  std::optional<Map> law;  ///< a law's class: the map, and the related input with its answer
+  Input related;
+  Answer related_answer;
   std::string case_file;  ///< paths relative to the report directory
   std::string picture;
   std::string reproducer;
@@ -122,6 +178,8 @@ struct RunReport {
   double seconds_library = 0;                         ///< inside the adapter (library + its conversions + protocol)
   double seconds_judge = 0;                           ///< generation, oracle, classification
   std::map<std::string, double> first_found_seconds;  ///< class -> seconds into the run
+  std::map<std::string, std::uint64_t> law_pairs;     ///< relation -> pairs judged by it
+  std::map<std::string, std::uint64_t> law_inexact;   ///< relation -> pairs whose stored geometry did not map exactly
 };
 
 /// Runs the judge on one adapter; writes <out>/<library>.json, <library>.md and the cases,

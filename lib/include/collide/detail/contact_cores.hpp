@@ -571,6 +571,19 @@ inline Vec2c find_witness_point(const Core& p, const Core& q, const ReferenceFac
   for (std::size_t j = 1; j < inc.size(); ++j) {
     if ((inc[j] - f.r1).dot(f.normal) < (inc[k] - f.r1).dot(f.normal)) k = j;
   }
+  // The offsets round at the pair's scale: vertices as deep as k up to that (a long incident side
+  // split by nearly collinear vertices) may lie far apart along the face. Of those, the one nearest
+  // the face's span names the point, so that its edges reach under the face.
+  const Vec2c tangent = f.r2 - f.r1;
+  const Calc len2 = tangent.squaredNorm(), tie = tie_of(point_scale(p, q));
+  const Calc least = (inc[k] - f.r1).dot(f.normal);
+  const auto beside = [&](std::size_t j) {
+    const Calc t = (inc[j] - f.r1).dot(tangent);
+    return t < 0 ? -t : std::max(t - len2, Calc(0));
+  };
+  for (std::size_t j = 0; j < inc.size(); ++j) {
+    if ((inc[j] - f.r1).dot(f.normal) <= least + tie && beside(j) < beside(k)) k = j;
+  }
   deepest = unsigned(k);
   // name: the incident vertex naming x (the deepest, unless x is another one moved).
   auto consider_witness = [&](const Vec2c& x, std::size_t name) {

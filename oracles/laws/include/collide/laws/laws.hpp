@@ -49,7 +49,9 @@ struct Verdict {
 template <Scalar T>
 Relation relation(const Shape<T>& a, const Shape<T>& b);
 
-/// Law agreement. overlaps(a, b) equals oracle::overlaps(a, b), for every pair and both scalars.
+/// Law agreement. overlaps(a, b) equals oracle::overlaps(a, b), for every pair and both scalars. A
+/// compound whose children carry transforms may differ only within its placement's band, and then
+/// its answer must be the oracle's on the children's images the library computed, bit for bit.
 template <Scalar T>
 Verdict agreement(const Shape<T>& a, const Shape<T>& b);
 
@@ -62,10 +64,13 @@ template <Scalar T>
 Verdict symmetry(const Shape<T>& a, const Shape<T>& b);
 
 /// Law translation. Moving both shapes by t (with translated()): when both moves are exact (every stored
-/// value moved by exactly t), overlaps() gives the identical answer; otherwise the moved pair
-/// must agree with the oracle, and the answer may change only where the unmoved pair is within
-/// 4 eps_T S of touching (the rounding of the move). A move that leaves the representable range is
-/// rejected by translated() with a named error and is not a failure.
+/// value moved by exactly t), overlaps() gives the identical answer. Otherwise each case is judged
+/// exactly: the moved shapes are what translated() promises (each stored position plus t rounded
+/// once to T, bit for bit), both answers are the oracle's on the shapes the library computed (for
+/// children placed by transforms, their images), the moved pair agrees with the oracle outside the
+/// placement's band, and the answer changes only where the unmoved pair is within 4 eps_T S of
+/// touching (the rounding of the move). A move that leaves the representable range is rejected by
+/// translated() with a named error and is not a failure.
 template <Scalar T>
 Verdict translation(const Shape<T>& a, const Shape<T>& b, const Vec2<T>& t);
 
@@ -80,7 +85,8 @@ Verdict rotation(const Shape<T>& a, const Shape<T>& b, int quarter_turns, bool m
 /// within the band); otherwise the shape a' that translated(a, v) produces does not overlap b
 /// (oracle), and, for two primitives, |v| <= exact depth + resolve_margin + slack, where slack =
 /// 4 tolerances (the computed depth's own error, as in contact_law) plus v's rounding to T
-/// (oracle::compare_depth), and the gap left by the moved a' at most 2 (resolve_margin + slack).
+/// (oracle::compare_depth), and the gap left by the moved a' at most 2 (resolve_margin + slack);
+/// resolve_margin(a, b, |v|, v / |v|) as documented, along the push's own direction.
 /// Compounds: separation only (the oracle has no exact depth for them).
 template <Scalar T>
 Verdict resolution(const Shape<T>& a, const Shape<T>& b);
@@ -252,7 +258,7 @@ Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>
 /// Law placed_resolution. v = resolve(a, xa, b, xb): zero without an overlap; otherwise a with its transform
 /// moved by v (Transform::moved; OutOfRange allowed, then the exact move is judged) is apart from b
 /// by the oracle, and for two primitives the gap left is at most 2 (resolve_margin(a, xa, b, xb,
-/// |v|) + slack) and |v| at most the exact depth + margin + slack (slack as in law resolution).
+/// |v|, v / |v|) + slack) and |v| at most the exact depth + margin + slack (slack as in law resolution).
 template <Scalar T>
 Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
@@ -410,7 +416,8 @@ Verdict cast_translation(const Shape<T>& a, const Shape<T>& b, const CastInput<T
 /// A zero-radius circle cast from the ray's origin along its direction against a still s agrees
 /// with raycast(s, ray, max_t) on hit or miss, except for a ray passing within the larger of the
 /// two tolerances (a disagreement), and never misses when the exact dot meets s within max_t;
-/// both start inside: both at t = 0.
+/// both start inside: both at t = 0, unless the origin lies within the larger tolerance of the
+/// boundary (either answer there is within both contracts: a disagreement).
 template <Scalar T>
 Verdict cast_raycast(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
