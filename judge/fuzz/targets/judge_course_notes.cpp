@@ -6,8 +6,8 @@
 // called apart, is a touching-level wrong answer, never a finding). A target that stopped at
 // them would stop within seconds and find nothing else, and its seed replay would fail for
 // ever; so their classes are measurements here, as are the limits of the notes' formulas at
-// subnormal scales (below), and only another class or a crash is a finding. COLLIDE_JUDGE_FUZZ_SLIPS=1 makes them findings too:
-// ctest fuzz.seeds.judge_course_notes.slips checks that the seeds then find one.
+// subnormal scales (below), and only another class or a crash is a finding. COLLIDE_JUDGE_FUZZ_SLIPS=1 makes them
+// findings too: ctest fuzz.seeds.judge_course_notes.slips checks that the seeds then find one.
 //
 // Input: flags byte (bit 0: double values, else float), shape a, shape b
 // (collide/fuzz/decode.hpp); kinds other than circle and aabb are skipped.
@@ -20,8 +20,8 @@ namespace {
 using collide::judge::fuzz_target::decode_case;
 
 collide::judge::fuzz_target::Target<collide::judge::CourseNotesAdapter> g_target({
-    "wrong.false_overlap.gross.aabb_aabb",       // the box test: b.max.y < a.min.x
-    "wrong.false_apart.gross.aabb_aabb",         // the same comparison, the other way
+    "wrong.false_overlap.gross.aabb_aabb",        // the box test: b.max.y < a.min.x
+    "wrong.false_apart.gross.aabb_aabb",          // the same comparison, the other way
     "wrong.push_leaves_overlap.gross.aabb_aabb",  // the box resolution, its sign reversed
     // The notes' formulas as written: squared distances underflow for circles below about
     // 2^-511 (apart), and a push divides by a distance that is 0 or subnormal (not finite).
