@@ -206,6 +206,10 @@ Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<
       j.v.disagreement = true;
       const double band = overlap_tolerance(a, xa, b, xb);
       j.note("differs from the exact images within band " + num(band));
+      // Judged exactly, never counted: the oracle on the images the library computed.
+      const bool computed = oracle::overlaps(detail::computed_geometry(a, xa), detail::computed_geometry(b, xb));
+      j.require(got == computed, "overlaps " + yes(computed) + " (the oracle on the images the library computed)",
+                yes(got));
       j.require(oracle::within_band(pa, pb, band),
                 "the oracle's answer " + yes(exact) + " outside the band " + num(band),
                 yes(got) + ", signed distance ~" + num(oracle::approx_signed_distance(pa, pb)));
@@ -310,6 +314,9 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
         j.v.relation = in ? Relation::Contained : Relation::Separated;
         if (in != exact_in) {
           j.v.disagreement = true;
+          const bool computed = oracle::contains(detail::computed_geometry(s, x), widen(p));
+          j.require(in == computed, "contains " + yes(computed) + " (the oracle on the image the library computed)",
+                    yes(in));
           j.require(oracle::within_band(ps, point_input(widen(p)), tol),
                     "contains " + yes(exact_in) + " outside the band " + num(tol), yes(in));
         }
@@ -360,6 +367,9 @@ Verdict placed_covariance(const Shape<T>& a, const Shape<T>& b, const Transform<
                   "a difference");
     } else if (world != moved) {
       j.v.disagreement = true;
+      const bool computed = oracle::overlaps(detail::computed_geometry(a, x), detail::computed_geometry(b, x));
+      j.require(moved == computed, "overlaps " + yes(computed) + " (the oracle on the images the library computed)",
+                yes(moved));
       const double band = overlap_tolerance(a, x, b, x) + scaling_band(a, b, x);
       j.require(oracle::within_band(pa, pb, band), "the world answer outside the band " + num(band), yes(moved));
     }

@@ -243,7 +243,8 @@ constexpr std::string_view name(LawSuite s) noexcept {
 // (oracle::placed): a shape with transform x is the exact image of its stored values under x.
 
 /// Law placed_agreement. overlaps(a, xa, b, xb) equals the oracle's answer on the exact images outside the band
-/// overlap_tolerance(a, xa, b, xb) (inside it a difference is a disagreement); it is symmetric to
+/// overlap_tolerance(a, xa, b, xb) (inside it a difference is a disagreement, and the answer must be
+/// the oracle's on the images the library computed, bit for bit); it is symmetric to
 /// the bit, equals overlaps(a, b) for identities, and contact() / distance() agree with it.
 template <Scalar T>
 Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
