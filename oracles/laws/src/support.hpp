@@ -142,13 +142,21 @@ double documented_margin(double s, const Vec2<double>& s_moved, const Vec2<doubl
          2 * double(std::numeric_limits<T>::denorm_min()) + extra;
 }
 
-/// The unit direction of a push, the direction its margin is judged along; (1, 1) (every axis in
-/// full) for a zero push.
+/// The direction a push's margin is judged along, per axis at least that of the normal it was
+/// made from: resolve() rounds each component of -n L toward zero in T, so |n_i| L lies below
+/// |v_i| plus one unit in the last place of v_i (a whole subnormal unit near zero, where the
+/// rounded push can turn far from n), and L >= |v|. (1, 1) (every axis in full) for a zero push.
 template <Scalar T>
 Vec2<double> push_direction(const Vec2<T>& push) {
-  const Vec2<double> v = push.template cast<double>();
-  const double len = v.norm();
-  return len > 0 ? Vec2<double>(v / len) : Vec2<double>(1, 1);
+  const double len = push.template cast<double>().norm();
+  if (!(len > 0)) return Vec2<double>(1, 1);
+  Vec2<double> n;
+  for (int i = 0; i < 2; ++i) {
+    const T m = std::fabs(push[i]);
+    const double unit = double(std::nextafter(m, std::numeric_limits<T>::infinity())) - double(m);
+    n[i] = std::min(1.0, (double(m) + unit) / len);
+  }
+  return n;
 }
 
 /// The largest absolute x and y of a box.
