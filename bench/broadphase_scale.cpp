@@ -3,7 +3,10 @@
 // - 1,000,000 boxes (sides 0.5 to 1.5, about 2 overlaps each) added one by one, then every pair
 //   visited with for_each_pair; the three structures must count the same pairs;
 // - 10,000 boxes that all overlap each other (49,995,000 pairs) visited with for_each_pair, which
-//   builds no list: memory stays that of the structure.
+//   builds no list: memory stays that of the structure;
+// - a World of 1,000,000 bodies, each a circle in its own frame placed by a transform at the
+//   centre of one of the spread boxes: the bodies' adding, the first step (every contact found,
+//   against its own tree's pair walk), and 100,000 point queries.
 // Usage: collide_broadphase_scale [N (default 1000000)] [M (default 10000)]. Exit status 1 when a
 // count is wrong or a case fails.
 
@@ -17,8 +20,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -68,14 +73,50 @@ void run_case(B s, const std::vector<collide::Aabb<float>>& boxes, int fd) {
   if (write(fd, line.data(), line.size()) < 0) std::_Exit(3);
 }
 
+/// A World of n circles placed at the centres of `boxes`: writes "add_ms step_ms walk_ms
+/// contacts query_us hits" to the pipe.
+void run_world(const std::vector<collide::Aabb<float>>& boxes, int fd) {
+  bp::World<float> world;
+  const auto t0 = Clock::now();
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const V size = boxes[i].max() - boxes[i].min();
+    const collide::Circle<float> local(V(0, 0), 0.5f * std::min(size.x(), size.y()));
+    world.add(local, collide::Transform<float>::make(0.5f * (boxes[i].min() + boxes[i].max()), 0.0f).value(), i);
+  }
+  const double add = ms_since(t0);
+  const auto t1 = Clock::now();
+  world.step();
+  const double step = ms_since(t1);
+  const auto t2 = Clock::now();
+  std::size_t pairs = 0;
+  world.broadphase().for_each_pair([&](bp::ProxyId, bp::ProxyId) { ++pairs; });
+  const double walk = ms_since(t2);
+  std::mt19937 rng{99};
+  const float extent = std::sqrt(2.0f * float(boxes.size()));
+  std::uniform_real_distribution<float> pos(0, extent);
+  constexpr int kQueries = 100000;
+  std::vector<V> points;
+  for (int q = 0; q < kQueries; ++q) points.emplace_back(pos(rng), pos(rng));
+  std::size_t hits = 0;
+  const auto t3 = Clock::now();
+  for (const V& p : points) world.query_point(p, [&](bp::ProxyId) { ++hits; });
+  const double query_us = 1e3 * ms_since(t3) / kQueries;
+  const std::string line = std::to_string(add) + " " + std::to_string(step) + " " + std::to_string(walk) + " " +
+                           std::to_string(world.contact_count()) + " " + std::to_string(query_us) + " " +
+                           std::to_string(hits) + " " + std::to_string(pairs);
+  if (write(fd, line.data(), line.size()) < 0) std::_Exit(3);
+}
+
 struct Result {
   bool ok = false;
   double build_ms = 0, pairs_ms = 0, peak_mib = 0;
   std::size_t pairs = 0;
 };
 
+/// Runs body(fd) in a child process; returns what it wrote and the child's peak memory in MiB
+/// (empty text when it failed).
 template <class F>
-Result in_child(F&& body) {
+std::pair<std::string, double> child_output(F&& body) {
   int fds[2];
   if (pipe(fds) != 0) return {};
   const pid_t pid = fork();
@@ -92,10 +133,16 @@ Result in_child(F&& body) {
   int status = 0;
   rusage use{};
   wait4(pid, &status, 0, &use);
+  const bool ok = got > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return {ok ? std::string(buf) : std::string(), double(use.ru_maxrss) / 1024.0};  // KiB on Linux
+}
+
+template <class F>
+Result in_child(F&& body) {
+  const auto [text, peak] = child_output(std::forward<F>(body));
   Result r;
-  r.ok = got > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-         std::sscanf(buf, "%lf %lf %zu", &r.build_ms, &r.pairs_ms, &r.pairs) == 3;
-  r.peak_mib = double(use.ru_maxrss) / 1024.0;  // KiB on Linux
+  r.ok = std::sscanf(text.c_str(), "%lf %lf %zu", &r.build_ms, &r.pairs_ms, &r.pairs) == 3;
+  r.peak_mib = peak;
   return r;
 }
 
@@ -131,6 +178,21 @@ int main(int argc, char** argv) {
            want);
     report("all-overlapping/grid" + tag, in_child([&](int fd) { run_case(bp::UniformGrid<float>(2.0f), boxes, fd); }),
            want);
+  }
+  {
+    const auto boxes = spread_boxes(n);
+    const auto [text, peak] = child_output([&](int fd) { run_world(boxes, fd); });
+    double add = 0, step = 0, walk = 0, query_us = 0;
+    std::size_t contacts = 0, hits = 0, pairs = 0;
+    const bool good = std::sscanf(text.c_str(), "%lf %lf %lf %zu %lf %zu %zu", &add, &step, &walk, &contacts, &query_us,
+                                  &hits, &pairs) == 7 &&
+                      contacts <= pairs && contacts > 0;
+    ok = ok && good;
+    std::printf(
+        "world/%zu: add %.1f ms, first step %.1f ms (%.2fx its tree's pair walk, %.1f ms, %zu pairs), %zu contacts; "
+        "point query %.2f us (%zu hits); peak %.1f MiB  %s\n",
+        n, add, step, walk > 0 ? step / walk : 0.0, walk, pairs, contacts, query_us, hits, peak,
+        good ? "OK" : "FAILED");
   }
   return ok ? 0 : 1;
 }

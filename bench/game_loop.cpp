@@ -7,6 +7,10 @@
 //      collide's loop runs a second time on sort and sweep, the structure that suits many
 //      similar bodies moving coherently;
 //   3. narrowphase: a contact manifold for every candidate pair.
+// The update of phase 2 (each body's box under its new pose, moved in the tree) is also counted
+// on its own (update_ms): it is what a World's move() costs. A fourth loop runs the documented
+// World loop: world.move(id, pose) per body (update_ms, its broadphase_ms), then world.step(),
+// which finds the pairs and computes every contact of a moved body (step_ms).
 // collide: local shapes with Transform<float>, DynamicTree, Narrowphase (contact(a, xa, b, xb) of
 // every pair, run kind pair by kind pair). Box2D 2.4.1:
 // b2Shape with b2Transform, b2DynamicTree, b2Collide* (polygon skin radius 0, capsules as 2-gons
@@ -168,6 +172,8 @@ Broadphase make_broadphase() {
 /// Per-frame milliseconds of each phase, and what the loop found (for the cross-check).
 struct Timings {
   double transforms = 0, broadphase = 0, narrowphase = 0;
+  double update = 0;             ///< the part of broadphase (all of it, for the World) that moves the boxes
+  double step = 0;               ///< the World only: world.step(), pairs and contacts
   double narrowphase_world = 0;  ///< Box2D only: b2Collide* and b2WorldManifold::Initialize, not in the frame
   std::size_t candidates = 0, contacts = 0, points = 0;
 };
@@ -207,6 +213,7 @@ Timings run_collide(const Scene& s, int frames = kFrames) {
         tree.move(id[i], box[i]);
       }
     }
+    const auto t_update = Clock::now();
     pairs.clear();
     tree.for_each_pair([&](bp::ProxyId x, bp::ProxyId y) {
       const std::size_t i = tree.user_data(x), j = tree.user_data(y);
@@ -220,9 +227,44 @@ Timings run_collide(const Scene& s, int frames = kFrames) {
     });
     const auto t3 = Clock::now();
     t.transforms += ms(t0, t1);
+    t.update += ms(t1, t_update);
     t.broadphase += ms(t1, t2);
     t.narrowphase += ms(t2, t3);
     t.candidates += pairs.size();
+  }
+  return t;
+}
+
+/// The documented World loop: local shapes added once with their poses, moved by new poses each
+/// frame, step() for the pairs and the contacts, every contact read as a solver would.
+Timings run_world(const Scene& s, int frames = kFrames) {
+  const std::size_t n = s.shapes.size();
+  std::vector<V> p = s.position, v = s.velocity;
+  std::vector<float> a = s.angle;
+  std::vector<collide::Transform<float>> xf(n);
+  bp::World<float> world(Tree(0.1f));
+  std::vector<bp::ProxyId> id(n);
+  for (std::size_t i = 0; i < n; ++i) id[i] = world.add(s.shapes[i], *collide::Transform<float>::make(p[i], a[i]), i);
+  world.step();
+  Timings t;
+  for (int frame = 0; frame < frames; ++frame) {
+    advance(p, v, a, s);
+    const auto t0 = Clock::now();
+    for (std::size_t i = 0; i < n; ++i) xf[i] = *collide::Transform<float>::make(p[i], a[i]);
+    const auto t1 = Clock::now();
+    for (std::size_t i = 0; i < n; ++i) world.move(id[i], xf[i]);
+    const auto t2 = Clock::now();
+    world.step();
+    world.for_each_contact([&](const bp::BodyContact<float>& c) {
+      benchmark::DoNotOptimize(c);
+      ++t.contacts;
+      t.points += std::size_t(c.contact.count);
+    });
+    const auto t3 = Clock::now();
+    t.transforms += ms(t0, t1);
+    t.update += ms(t1, t2);
+    t.broadphase += ms(t1, t2);
+    t.step += ms(t2, t3);
   }
   return t;
 }
@@ -281,6 +323,7 @@ Timings run_box2d(const Scene& s, int frames = kFrames) {
       s.b2shapes[i]->ComputeAABB(&box[i], xf[i], 0);
       tree.MoveProxy(id[i], box[i], box[i].GetCenter() - old.GetCenter());
     }
+    const auto t_update = Clock::now();
     pairs.clear();
     for (std::size_t i = 0; i < n; ++i) {
       q.self = std::uint32_t(i);
@@ -310,6 +353,7 @@ Timings run_box2d(const Scene& s, int frames = kFrames) {
     }
     const auto t4 = Clock::now();
     t.transforms += ms(t0, t1);
+    t.update += ms(t1, t_update);
     t.broadphase += ms(t1, t2);
     t.narrowphase += ms(t2, t3);
     t.narrowphase_world += ms(t3, t4);
@@ -320,13 +364,15 @@ Timings run_box2d(const Scene& s, int frames = kFrames) {
 
 void report(benchmark::State& state, const Timings& t) {
   state.counters["transforms_ms"] = t.transforms / kFrames;
-  state.counters["broadphase_ms"] = t.broadphase / kFrames;
-  state.counters["narrowphase_ms"] = t.narrowphase / kFrames;
+  if (t.step == 0) state.counters["broadphase_ms"] = t.broadphase / kFrames;    // the World's: update_ms, step_ms
+  if (t.step == 0) state.counters["narrowphase_ms"] = t.narrowphase / kFrames;  // the World's is inside its step
   if (t.narrowphase_world > 0) state.counters["narrowphase_world_ms"] = t.narrowphase_world / kFrames;
-  state.counters["frame_ms"] = (t.transforms + t.broadphase + t.narrowphase) / kFrames;
+  state.counters["update_ms"] = t.update / kFrames;
+  if (t.step > 0) state.counters["step_ms"] = t.step / kFrames;
+  state.counters["frame_ms"] = (t.transforms + t.broadphase + t.narrowphase + t.step) / kFrames;
   state.counters["contacts_per_frame"] = double(t.contacts) / kFrames;
   state.counters["points_per_frame"] = double(t.points) / kFrames;
-  state.SetIterationTime((t.transforms + t.broadphase + t.narrowphase) / 1e3);
+  state.SetIterationTime((t.transforms + t.broadphase + t.narrowphase + t.step) / 1e3);
 }
 
 }  // namespace
@@ -339,6 +385,12 @@ bool register_game_loop() {
     // pair touching within rounding may go either way; Box2D's tree pads boxes differently).
     const Timings c = run_collide<Tree>(*scene, 30), b = run_box2d(*scene, 30);
     const Timings sweep = run_collide<bp::SweepAndPrune<float>>(*scene, 30);
+    const Timings world = run_world(*scene, 30);
+    if (world.contacts != c.contacts || world.points != c.points) {
+      std::fprintf(stderr, "game_loop/%zu: the World found %zu contacts and %zu points, the Narrowphase %zu and %zu\n",
+                   n, world.contacts, world.points, c.contacts, c.points);
+      agreed = false;
+    }
     if (sweep.candidates != c.candidates || sweep.contacts != c.contacts) {
       std::fprintf(stderr, "game_loop/%zu: sort and sweep found %zu pairs and %zu contacts, the tree %zu and %zu\n", n,
                    sweep.candidates, sweep.contacts, c.candidates, c.contacts);
@@ -362,6 +414,13 @@ bool register_game_loop() {
     benchmark::RegisterBenchmark(("game_loop/collide_sweep/" + std::to_string(n)).c_str(),
                                  [scene](benchmark::State& st) {
                                    for (auto _ : st) report(st, run_collide<bp::SweepAndPrune<float>>(*scene));
+                                 })
+        ->Iterations(1)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("game_loop/collide_world/" + std::to_string(n)).c_str(),
+                                 [scene](benchmark::State& st) {
+                                   for (auto _ : st) report(st, run_world(*scene));
                                  })
         ->Iterations(1)
         ->UseManualTime()

@@ -13,10 +13,12 @@ int main(int argc, char** argv) {
   const bool narrow = bench::register_narrowphase();
   const bool broad = bench::register_broadphase();
   const bool loop = bench::register_game_loop();
+  const bool dist = bench::register_distance();
+  const bool mass = bench::register_mass();
 #if defined(COLLIDE_BENCH_CAST)
   bench::register_cast();
 #endif
-  if (!narrow || !broad || !loop) {
+  if (!narrow || !broad || !loop || !dist || !mass) {
     std::fprintf(stderr, "cross-check FAILED: collide and its peers disagree; nothing was timed\n");
     return 1;
   }

@@ -79,8 +79,9 @@ def ratio(a, b):
 
 
 # The game loop's phases as its counters name them, and the goals on collide / Box2D per frame.
-LOOP_PHASES = ("transforms", "broadphase", "narrowphase", "frame")
+LOOP_PHASES = ("transforms", "update", "broadphase", "narrowphase", "frame")
 LOOP_GOALS = (("narrowphase", "narrowphase <= Box2D's", 1.0), ("transforms", "shape update <= Box2D's", 1.0),
+              ("update", "boxes moved (the World's move()) <= Box2D's", 1.0),
               ("frame", "whole frame <= 0.5x Box2D's", 0.5))
 
 
@@ -129,6 +130,30 @@ def main():
             row["naive_contact_ns"] = get("naive", "contact")
             row["naive_contact_ratio_vs_manifold"] = ratio(row["naive_contact_ns"], row["box2d_manifold_contact_ns"])
             pairs.append(row)
+    # Distances: closest_points() and distance() against b2Distance of the same pair (distance,
+    # pointA, pointB); signed_distance() and contains() of points against b2Distance from a
+    # one-vertex proxy and b2Shape::TestPoint.
+    distances = []
+    for name in sorted(m):
+        parts = name.split("/")
+        if parts[0] == "distance" and parts[3] == "closest_points":
+            key = "distance/%s/%s/" % (parts[1], parts[2])
+            row = {"pair": parts[1], "set": parts[2], "closest_points_ns": m[name],
+                   "distance_ns": m.get(key + "distance"), "box2d_distance_ns": m.get(key + "box2d_distance")}
+            row["closest_points_ratio"] = ratio(row["closest_points_ns"], row["box2d_distance_ns"])
+            row["distance_ratio"] = ratio(row["distance_ns"], row["box2d_distance_ns"])
+            distances.append(row)
+    points = []
+    for name in sorted(m):
+        parts = name.split("/")
+        if parts[0] == "point" and parts[3] == "signed_distance":
+            key = "point/%s/%s/" % (parts[1], parts[2])
+            row = {"kind": parts[1], "set": parts[2], "signed_distance_ns": m[name],
+                   "contains_ns": m.get(key + "contains"), "box2d_distance_ns": m.get(key + "box2d_distance"),
+                   "box2d_test_point_ns": m.get(key + "box2d_test_point")}
+            row["signed_distance_ratio"] = ratio(row["signed_distance_ns"], row["box2d_distance_ns"])
+            row["contains_ratio"] = ratio(row["contains_ns"], row["box2d_test_point_ns"])
+            points.append(row)
     sizes = sorted({int(n.split("/")[3]) for n in m if n.startswith("broadphase/")})
     for n in sizes:
         for op in ("build", "pairs", "move10"):
@@ -156,7 +181,7 @@ def main():
     loops = []
     for n in sorted({int(k.split("/")[2]) for k in loop_counters}):
         b2 = loop_counters.get("game_loop/box2d/%d" % n)
-        for impl, structure in (("collide", "tree"), ("collide_sweep", "sweep")):
+        for impl, structure in (("collide", "tree"), ("collide_sweep", "sweep"), ("collide_world", "world")):
             c = loop_counters.get("game_loop/%s/%d" % (impl, n))
             if b2 is None or c is None:
                 continue
@@ -169,6 +194,14 @@ def main():
             # returns), timed outside its frame: the same outputs, not the goal's measure.
             row["box2d_narrowphase_world_ms"] = b2.get("narrowphase_world_ms")
             row["narrowphase_world_ratio"] = ratio(row["narrowphase_ms"], row["box2d_narrowphase_world_ms"])
+            # The World's step finds the pairs and computes the contacts: Box2D's pair finding (its
+            # broadphase less its update) plus its narrowphase.
+            row["step_ms"] = c.get("step_ms")
+            b2_step = None
+            if None not in (b2.get("broadphase_ms"), b2.get("update_ms"), b2.get("narrowphase_ms")):
+                b2_step = b2["broadphase_ms"] - b2["update_ms"] + b2["narrowphase_ms"]
+            row["box2d_step_ms"] = b2_step
+            row["step_ratio"] = ratio(row["step_ms"], b2_step)
             loops.append(row)
 
     def fmt(x):
@@ -193,6 +226,21 @@ def main():
                 "naive_contact_ns", "collide_contact_ns", "box2d_manifold_contact_ns",
                 "naive_contact_ratio_vs_manifold", "contact_ratio_vs_manifold")] for r in floors],
             right=set(range(2, 7)))
+    if distances:
+        print("\nDistances (ns per pair; ratio = collide / Box2D b2Distance with its witness points, < 1 is faster)")
+        collide_tools.print_table(
+            ["pair", "set", "closest_points", "distance", "b2Distance", "closest/", "distance/"],
+            [[r["pair"], r["set"]] + [fmt(r[k]) for k in (
+                "closest_points_ns", "distance_ns", "box2d_distance_ns", "closest_points_ratio", "distance_ratio")]
+             for r in distances], right=set(range(2, 7)))
+    if points:
+        print("\nPoints (ns per point; signed_distance / Box2D b2Distance from a one-vertex proxy, unsigned;"
+              " contains / b2Shape::TestPoint)")
+        collide_tools.print_table(
+            ["kind", "set", "signed", "b2Distance", "ratio", "contains", "TestPoint", "ratio"],
+            [[r["kind"], r["set"]] + [fmt(r[k]) for k in (
+                "signed_distance_ns", "box2d_distance_ns", "signed_distance_ratio", "contains_ns",
+                "box2d_test_point_ns", "contains_ratio")] for r in points], right=set(range(2, 8)))
     print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster; batch = tree add_batch)")
     collide_tools.print_table(
         ["N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid", "batch", "xBatch"],
@@ -212,12 +260,15 @@ def main():
         print("\nGame loop (ms per frame, collide / Box2D 2.4.1 in the same run; ratio < 1 is faster; /world:"
               " narrowphase / Box2D's b2Collide* plus b2WorldManifold, the same outputs, timed outside its frame)")
         collide_tools.print_table(
-            ["N", "collide", "transforms", "broadphase", "narrowphase", "frame", "/transf", "/broad", "/narrow",
-             "/frame", "/world"],
+            ["N", "collide", "transforms", "update", "broadphase", "narrowphase", "frame", "/transf", "/update",
+             "/broad", "/narrow", "/frame", "/world", "/step"],
             [[r["n"], r["structure"]] + ["%.3f / %.3f" % (r[p + "_ms"], r["box2d_" + p + "_ms"])
                                          if r[p + "_ms"] is not None and r["box2d_" + p + "_ms"] is not None else "-"
                                          for p in LOOP_PHASES] + [fmt(r[p + "_ratio"]) for p in LOOP_PHASES]
-             + [fmt(r["narrowphase_world_ratio"])] for r in loops], right={0} | set(range(2, 11)))
+             + [fmt(r["narrowphase_world_ratio"]), fmt(r["step_ratio"])] for r in loops],
+            right={0} | set(range(2, 14)))
+        print("(world: the documented World loop; its broadphase is its move() alone, its step (pairs and"
+              " contacts) is /step against Box2D's pair finding plus its narrowphase)")
 
     goals = []
     for r in pairs:
@@ -264,7 +315,7 @@ def main():
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
            "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
-           "broadphase_events": events, "game_loop": loops,
+           "broadphase_events": events, "game_loop": loops, "distances": distances, "points": points,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:

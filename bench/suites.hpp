@@ -6,5 +6,7 @@ namespace bench {
 bool register_narrowphase();
 bool register_broadphase();
 bool register_game_loop();
-bool register_cast();  // bench/cast.cpp, built when the exact oracle is available
+bool register_mass();      // bench/mass.cpp: mass, centroid and inertia
+bool register_distance();  // bench/distance.cpp: closest points and signed distances
+bool register_cast();      // bench/cast.cpp, built when the exact oracle is available
 }  // namespace bench

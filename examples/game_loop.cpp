@@ -1,10 +1,10 @@
 /// @file game_loop.cpp
 /// A game loop with collide: thirty moving, spinning bodies of every primitive kind in a walled
-/// arena. Each frame moves the bodies, lets the persistent World update its broadphase and report
-/// the contacts that began and ended, asks contact() for every touching pair and pushes bodies out
-/// of each other and out of the walls with resolve(). At the end it checks the World against all
-/// pairs, and writes the last frame as an SVG picture (game_loop.svg, or the path in argv[1]).
-/// Exits non-zero if any check fails.
+/// arena. Each body's shape is built once in its own frame; each frame moves the bodies by new
+/// transforms, lets the persistent World compute their contacts and report the contacts that
+/// began and ended, and pushes bodies out of each other and out of the walls with resolve(). At
+/// the end it checks the World against all pairs, and writes the last frame as an SVG picture
+/// (game_loop.svg, or the path in argv[1]). Exits non-zero if any check fails.
 
 #include <collide/broadphase.hpp>
 #include <collide/collide.hpp>
@@ -40,8 +40,8 @@ struct Body {
   ProxyId id;
 };
 
-/// The body's shape in world space at its current position and angle.
-Shape<T> shape_of(const Body& b) {
+/// The body's shape in world space at its current position and angle (for the picture).
+Shape<T> world_shape(const Body& b) {
   const V axis(std::cos(b.angle), std::sin(b.angle));
   switch (b.kind) {
     case collide::ShapeKind::Circle:
@@ -61,6 +61,19 @@ Shape<T> shape_of(const Body& b) {
       return collide::ConvexPolygon<T>(std::span<const V>(v));
     }
   }
+}
+
+/// The body's shape in its own frame, built once.
+Shape<T> local_shape(const Body& b) {
+  Body at_origin = b;
+  at_origin.position = V(0, 0);
+  at_origin.angle = 0;
+  return world_shape(at_origin);
+}
+
+/// The body's pose: where its frame is and how it is turned.
+collide::Transform<T> pose(const Body& b) {
+  return collide::Transform<T>::make(b.position, b.angle).value();
 }
 
 /// Deterministic pseudo-random numbers in [0, 1), so every run is the same scene.
@@ -129,7 +142,7 @@ void write_svg(const char* path, const std::vector<Shape<T>>& walls, const std::
         s);
   };
   for (const Shape<T>& w : walls) draw(w, "#888888");
-  for (const Body& b : bodies) draw(shape_of(b), "#4a7fc1");
+  for (const Body& b : bodies) draw(world_shape(b), "#4a7fc1");
   for (const auto& [p, n] : contacts) {
     std::fprintf(f, "<circle cx=\"%g\" cy=\"%g\" r=\"3\" fill=\"#d03030\"/>\n", double(x(p.x())), double(y(p.y())));
     std::fprintf(f, "<line x1=\"%g\" y1=\"%g\" x2=\"%g\" y2=\"%g\" stroke=\"#d03030\" stroke-width=\"1.5\"/>\n",
@@ -154,7 +167,8 @@ int main(int argc, char** argv) {
   for (const Shape<T>& w : walls)
     wall_ids.push_back(world.add(w, 0, collide::broadphase::Filter{kWallGroup, kBodyGroup}));
 
-  // Moving bodies on a grid, every primitive kind, with random speeds and spins.
+  // Moving bodies on a grid, every primitive kind, with random speeds and spins: each body's
+  // shape is given once, in its own frame, with the transform that places it.
   Random rng;
   std::vector<Body> bodies;
   const collide::ShapeKind kinds[] = {collide::ShapeKind::Circle, collide::ShapeKind::Obb, collide::ShapeKind::Capsule,
@@ -167,7 +181,8 @@ int main(int argc, char** argv) {
            V(rng.next() * 16 - 8, rng.next() * 16 - 8),
            rng.next() * 4 - 2,
            ProxyId{}};
-    b.id = world.add(shape_of(b), std::uint64_t(i), collide::broadphase::Filter{kBodyGroup, kWallGroup | kBodyGroup});
+    b.id = world.add(local_shape(b), pose(b), std::uint64_t(i),
+                     collide::broadphase::Filter{kBodyGroup, kWallGroup | kBodyGroup});
     bodies.push_back(b);
   }
   auto body_of = [&](ProxyId id) -> Body* {
@@ -180,54 +195,62 @@ int main(int argc, char** argv) {
   long began = 0, ended = 0, contact_pairs = 0, contact_points = 0, pushes_left_overlapping = 0;
   std::vector<std::pair<V, V>> last_contacts;
   for (int frame = 0; frame < kFrames; ++frame) {
-    // 1. Move: integrate, then give the World each body's new world-space shape.
+    // 1. Move: integrate, then give the World each body's new transform (no shape is rebuilt).
     for (Body& b : bodies) {
       b.position += b.velocity * kDt;
       b.angle += b.spin * kDt;
-      world.move(b.id, shape_of(b));
+      world.move(b.id, pose(b));
     }
-    // 2. The broadphase and the exact decisions: contacts that began and ended this frame.
+    // 2. The broadphase and the contacts of the placed shapes: those that began and ended.
     const collide::broadphase::PairEvents& events = world.step();
     began += long(events.began.size());
     ended += long(events.ended.size());
 
     // On the last frame, the World's contacts must be exactly the overlapping pairs its filters
-    // allow, found by testing all pairs.
+    // allow, found by testing all pairs, each with the manifold contact() gives for that pair.
     if (frame == kFrames - 1) {
       std::set<std::pair<std::uint32_t, std::uint32_t>> reported, all_pairs;
-      world.for_each_contact([&](ProxyId a, ProxyId b) { reported.insert(std::minmax(a.index, b.index)); });
-      std::vector<std::pair<ProxyId, Shape<T>>> every;
-      for (std::size_t i = 0; i < walls.size(); ++i) every.emplace_back(wall_ids[i], walls[i]);
-      for (const Body& b : bodies) every.emplace_back(b.id, shape_of(b));
+      world.for_each_contact([&](const collide::broadphase::BodyContact<T>& c) {
+        reported.insert(std::minmax(c.a.index, c.b.index));
+        const auto again =
+            collide::contact(world.shape(c.a), world.transform(c.a), world.shape(c.b), world.transform(c.b));
+        expect(again && again->normal == c.contact.normal && again->depth == c.contact.depth,
+               "a World contact is the pair's contact()");
+      });
+      std::vector<ProxyId> every(wall_ids);
+      for (const Body& b : bodies) every.push_back(b.id);
       for (std::size_t i = 0; i < every.size(); ++i)
         for (std::size_t j = i + 1; j < every.size(); ++j) {
           const bool both_walls = i < walls.size() && j < walls.size();
-          if (!both_walls && collide::overlaps(every[i].second, every[j].second))
-            all_pairs.insert(std::minmax(every[i].first.index, every[j].first.index));
+          if (!both_walls && collide::overlaps(world.shape(every[i]), world.transform(every[i]), world.shape(every[j]),
+                                               world.transform(every[j])))
+            all_pairs.insert(std::minmax(every[i].index, every[j].index));
         }
       expect(reported == all_pairs, "the World's contacts are exactly the overlapping pairs");
       expect(long(reported.size()) == began - ended, "contacts now = contacts begun - contacts ended");
       last_contacts.clear();
     }
 
-    // 3. Contacts and resolution: every touching pair gets its contact; bodies are pushed apart
-    //    (half each) and out of walls (all of it), and bounce off along the contact normal.
-    world.for_each_contact([&](ProxyId ia, ProxyId ib) {
+    // 3. Contacts and resolution: every contact the step found; bodies are pushed apart (half
+    //    each) and out of walls (all of it), and bounce off along the contact normal. A push moves
+    //    a body after the step, so the push is asked of the bodies where they are now.
+    world.for_each_contact([&](const collide::broadphase::BodyContact<T>& c) {
+      ProxyId ia = c.a, ib = c.b;
+      V n = c.contact.normal;  // from a toward b
       Body* a = body_of(ia);
       Body* b = body_of(ib);
-      if (!a) std::swap(a, b), std::swap(ia, ib);  // a is always a body
-      const Shape<T> sa = shape_of(*a);
-      const Shape<T> sb = b ? shape_of(*b) : world.shape(ib);
-      const auto c = collide::contact(sa, sb);
-      if (!c) return;  // apart again after an earlier push this frame
+      if (!a) std::swap(a, b), std::swap(ia, ib), n = -n;  // a is always a body
       ++contact_pairs;
-      contact_points += c->count;
+      contact_points += c.contact.count;
       if (frame == kFrames - 1)
-        for (int p = 0; p < c->count; ++p) last_contacts.emplace_back(c->points[std::size_t(p)], c->normal);
-      const V push = collide::resolve(sa, sb);
-      const auto moved = collide::translated(sa, push);
-      if (moved && collide::overlaps(*moved, sb)) ++pushes_left_overlapping;
-      const V n = c->normal;
+        for (int p = 0; p < c.contact.count; ++p) last_contacts.emplace_back(c.contact.points[std::size_t(p)], n);
+      const Shape<T>& sa = world.shape(ia);
+      const Shape<T>& sb = world.shape(ib);
+      const collide::Transform<T> xa = pose(*a), xb = b ? pose(*b) : world.transform(ib);
+      if (!collide::overlaps(sa, xa, sb, xb)) return;  // apart again after an earlier push this frame
+      const V push = collide::resolve(sa, xa, sb, xb);
+      const auto moved = xa.moved(push);
+      if (moved && collide::overlaps(sa, *moved, sb, xb)) ++pushes_left_overlapping;
       if (b) {
         a->position += push / 2;
         b->position -= push / 2;

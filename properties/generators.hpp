@@ -440,6 +440,49 @@ std::pair<Shape<T>, Shape<T>> gen_touching_pair(ShapeKind ka, ShapeKind kb) {
   return gen_pair<T>(ka, kb, style == 2 ? Placement::Nudged : Placement::Touching);
 }
 
+/// A pair for the contains_shape law: the second shape built inside the first so that it touches
+/// the first's boundary from inside (the same shape; a disc at a core point with the core's radius;
+/// a capsule along a core edge; a polygon through the core's vertices), or a pair of gen_pair
+/// (half of them one placed inside the other); a third of them with the inner shape then moved by
+/// one ulp along an axis, out or further in. A shape the factories reject keeps gen_pair's.
+template <Scalar T>
+std::pair<Shape<T>, Shape<T>> gen_nested_pair(ShapeKind ka, ShapeKind kb) {
+  using V = Vec2<T>;
+  auto [a, b] = gen_pair<T>(ka, kb, *rc::gen::arbitrary<bool>() ? std::optional(Placement::Contained) : std::nullopt);
+  const ::collide::detail::Core core = first_core(a);
+  const std::size_t n = core.size(), i = std::size_t(*rc::gen::inRange(0, int(n)));
+  const auto at = [&](std::size_t k) { return V(T(core[k % n].x()), T(core[k % n].y())); };
+  const T radius = T(core.radius);
+  switch (*rc::gen::inRange(0, 5)) {
+    case 0:
+      b = a;
+      break;
+    case 1:
+      if (auto c = Circle<T>::make(at(i), radius)) b = c.value();
+      break;
+    case 2:
+      if (auto c = Capsule<T>::make(at(i), at(i + 1), radius)) b = c.value();
+      break;
+    case 3:
+      if (n >= 3) {
+        std::vector<V> pts;
+        for (std::size_t k = 0; k < n; ++k) pts.push_back(at(k));
+        if (*rc::gen::arbitrary<bool>()) pts = {at(i), at(i + 1), at(i + 2)};
+        if (auto p = ConvexPolygon<T>::make(pts)) b = p.value();
+      }
+      break;
+    default:
+      break;
+  }
+  if (*rc::gen::inRange(0, 3) == 0) {
+    const int axis = *rc::gen::inRange(0, 2), sign = *rc::gen::element(-1, 1);
+    V t(0, 0);
+    t[axis] = T(sign) * ulp_at<T>(extreme_x(b, sign).cwiseAbs().maxCoeff());
+    b = moved(b, t);
+  }
+  return {a, b};
+}
+
 /// A point to test contains() with: a core vertex of the shape, its extreme points, moved by a
 /// few ulps or by the radius, a point inside, a grid point nearby, or NaN / infinity.
 template <Scalar T>
@@ -470,6 +513,38 @@ Vec2<T> gen_point_near(const Shape<T>& s) {
     p[k] = std::nextafter(p[k], ulps > 0 ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity());
   }
   return p;
+}
+
+/// A polygon shape with coordinates of no short binary form, whose differences and products round
+/// (the dyadic grid never gives them): s turned by an angle about the origin and moved by k / 3 of
+/// a far distance, or a sliver of s's size, 3 to 6 points along a turned line off it by 2^-10 to
+/// 2^-40 of its length (each rounded to T, then their hull). Any other shape, or a polygon that
+/// rounds flat, is kept as it is.
+template <Scalar T>
+Shape<T> gen_rounding_polygon(const Shape<T>& s) {
+  const auto* poly = std::get_if<ConvexPolygon<T>>(&s);
+  if (poly == nullptr) return s;
+  const double angle = grid(1, 62) / 10, far = *rc::gen::element(0.0, 1.0, 1e4, 1e6);
+  const Vec2c shift(grid(-8, 8) * far / 3, grid(-8, 8) * far / 3), u(std::cos(angle), std::sin(angle));
+  std::vector<Vec2<T>> points;
+  if (*rc::gen::arbitrary<bool>()) {
+    for (const Vec2<T>& v : poly->vertices()) {
+      const Vec2c q = widen(v);
+      points.push_back(
+          (Vec2c(u.x() * q.x() - u.y() * q.y(), u.y() * q.x() + u.x() * q.y()) + shift).template cast<T>());
+    }
+  } else {
+    const double size = (widen(poly->vertices()[0]) - widen(poly->vertices()[1])).norm();
+    const double off = std::ldexp(size, -*rc::gen::inRange(10, 41));
+    const Vec2c start = widen(poly->vertices()[0]) + shift;
+    const int n = *rc::gen::inRange(3, 7);
+    for (int i = 0; i < n; ++i) {
+      const double along = size * grid(0, 64) / 64, across = off * grid(-4, 4);
+      points.push_back(Vec2c(start + along * u + across * Vec2c(-u.y(), u.x())).template cast<T>());
+    }
+  }
+  auto hull = ConvexPolygon<T>::make_hull(points);
+  return hull ? Shape<T>(std::move(hull).value()) : s;
 }
 
 /// A translation: exact dyadic (small or large), or inexact (k / 3, rounded).

@@ -25,8 +25,10 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace collide::props {
 namespace {
@@ -150,6 +152,33 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
       return simple(&laws::manifold_resting<T>);
     case Law::Speculative:
       return simple(&laws::manifold_speculative<T>);
+    case Law::Mass:
+      return [=] {
+        // A shape as the other laws draw them (half of the polygons turned and moved far, or
+        // slivers, so that their fans' products round); a density that keeps T's range, passes
+        // it, or is bad (one in sixteen); a move and a placement at the shape's scale.
+        const auto [a, b] = gen_pair<T>(ka, ka);
+        const Shape<T> s = *rc::gen::arbitrary<bool>() ? gen_rounding_polygon(a) : a;
+        const T top = std::numeric_limits<T>::max();
+        const std::vector<T> densities = {T(1),     T(1),    T(0),     T(0.5),   T(7.75),   T(1000),  T(1e-3),
+                                          T(1e-30), T(1e30), top / 64, T(1) / 3, T(2.5e-7), T(1) / 7, T(1) / 9};
+        const std::vector<T> bad = {-T(1), -std::numeric_limits<T>::denorm_min(), std::numeric_limits<T>::quiet_NaN(),
+                                    std::numeric_limits<T>::infinity()};
+        const T density = *rc::gen::inRange(0, 16) == 0 ? *rc::gen::elementOf(bad) : *rc::gen::elementOf(densities);
+        const Vec2<T> t = gen_translation<T>(scale_of_pair(a, a));
+        const Transform<T> x = gen_transform<T>(scale_of_pair(a, a));
+        judge<T>(laws::mass_law(s, density, t, x), law, subject, s, std::nullopt, false, [=](laws::Case& c) {
+          c.density = density;
+          c.tx = t.x();
+          c.ty = t.y();
+          if (!x.is_identity()) c.transform_a = laws::to_data(x);
+        });
+      };
+    case Law::ContainsShape:
+      return [=] {
+        const auto [a, b] = gen_nested_pair<T>(ka, kb);
+        judge<T>(laws::contains_shape_law(a, b), law, subject, a, b, true);
+      };
     case Law::Touching:
       return [=] {
         const auto [a, b] = gen_touching_pair<T>(ka, kb);
@@ -215,6 +244,28 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
           c.max_t = max_t;
         });
       };
+    case Law::RaycastExit:
+      return [=] {
+        const auto [a, b] = gen_pair<T>(ka, ka);
+        // From a's inner point, or from a point near a's boundary (on it, a few ulps either side,
+        // at a vertex; now and then outside, NaN or infinite), toward b's inner point (across a
+        // compound's children and the pair's contact) or along a grid direction.
+        const Vec2<T> near = gen_point_near(a);
+        const Vec2<T> origin = *rc::gen::inRange(0, 2) == 0 ? Vec2<T>(inner_point(a).template cast<T>()) : near;
+        const Vec2c from = origin.template cast<double>(), to = inner_point(b);
+        const bool aimed = *rc::gen::inRange(0, 4) != 0 && to != from;
+        const Vec2<T> dir = aimed ? Vec2<T>((to - from).template cast<T>()) : Vec2<T>(T(grid(-8, 8)), T(grid(-8, 8)));
+        const T max_t = *rc::gen::elementOf(std::vector<T>{T(0.5), T(1), T(2), T(1e6)});
+        const laws::Verdict v = laws::raycast_exit_law(a, Ray<T>{origin, dir}, max_t);
+        // Classified by the origin: "contained" (an exit judged) or "separated" (none expected).
+        judge<T>(v, law, subject, a, std::nullopt, true, [=](laws::Case& c) {
+          c.ox = origin.x();
+          c.oy = origin.y();
+          c.dx = dir.x();
+          c.dy = dir.y();
+          c.max_t = max_t;
+        });
+      };
     case Law::Contains:
       return [=] {
         const auto [a, b] = gen_pair<T>(ka, ka);
@@ -224,6 +275,24 @@ std::function<void()> property_of(laws::Law law, ShapeKind ka, ShapeKind kb, con
           c.py = p.y();
         });
       };
+    case Law::SignedDistance:
+      return [=] {
+        const auto [a, b] = gen_pair<T>(ka, ka);
+        // Near the boundary, inside, nearby, NaN or infinite (gen_point_near); or, one in eight,
+        // far out at any magnitude up to T's largest (the distance's rescaling, and its overflow
+        // to infinity).
+        Vec2<T> p = gen_point_near(a);
+        if (*rc::gen::inRange(0, 8) == 0) {
+          const double far = std::ldexp(1.0, *rc::gen::inRange(0, std::numeric_limits<T>::max_exponent));
+          p = Vec2<T>(T(grid(-8, 8) / 8 * far), T(grid(-8, 8) / 8 * far));
+        }
+        judge<T>(laws::signed_distance_law(a, p), law, subject, a, std::nullopt, false, [=](laws::Case& c) {
+          c.px = p.x();
+          c.py = p.y();
+        });
+      };
+    case Law::ClosestPoints:
+      return simple(&laws::closest_points_law<T>);
     case Law::Scene:
       return [=] {
         // A scene of up to 8 shapes of any kind placed against each other.

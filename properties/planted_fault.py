@@ -15,7 +15,12 @@ accepted, a resolution margin 64 times too long); with --suite moving, the suite
 (cast_test.cpp), run with the cast faults on. Every law of that suite (the law table's `suite`
 column, from collide_describe) must catch one; the placed suite runs on pairs without an AABB.
 
-usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR --faults NAMES [--suite placed|moving]
+With --laws, only the laws named (comma-separated, of the static suite) run, on every kind or pair,
+and each must catch one of the faults: the faults planted for those laws alone (a signed distance
+whose sign is dropped inside a polygon, a witness point left on its core).
+
+usage: planted_fault.py SUITE_EXECUTABLE DESCRIBE_EXECUTABLE CASES_DIR --faults NAMES
+                        [--suite placed|moving | --laws NAMES]
 """
 
 import argparse
@@ -71,8 +76,17 @@ def main():
     ap.add_argument("cases_dir", metavar="CASES_DIR")
     ap.add_argument("--faults", required=True, metavar="NAMES", help="the planted faults to turn on, comma-separated")
     ap.add_argument("--suite", choices=sorted(SUITE_FILTERS))
+    ap.add_argument("--laws", metavar="NAMES", help="only these static laws, comma-separated; each must catch one")
     args = ap.parse_args()
     exe, describe, cases_dir, suite, faults = args.exe, args.describe, args.cases_dir, args.suite, args.faults
+    if args.laws:
+        named = args.laws.split(",")
+        static = [law["name"] for law in law_table(describe) if law["suite"] == "static"]
+        unknown = [law for law in named if law not in static]
+        if unknown:
+            print(f"planted_fault.py: {', '.join(unknown)} not among the static laws")
+            return 2
+        return check_suite(exe, named, "static", cases_dir, faults, "{law}.*")
     if suite:
         return check_suite(exe, [law["name"] for law in law_table(describe) if law["suite"] == suite], suite,
                            cases_dir, faults)
@@ -96,11 +110,11 @@ def main():
     return 0 if ok else 1
 
 
-def check_suite(exe, laws, suite, cases_dir, faults):
+def check_suite(exe, laws, suite, cases_dir, faults, pattern=None):
     os.makedirs(cases_dir, exist_ok=True)
     rows, ok = [], True
     for law in laws:
-        caught, tests = run(exe, law, cases_dir, faults, SUITE_FILTERS[suite])
+        caught, tests = run(exe, law, cases_dir, faults, pattern or SUITE_FILTERS[suite])
         rows.append([law, "yes" if caught else "NO", ", ".join(tests[:6]) + (" ..." if len(tests) > 6 else "")])
         ok = ok and caught
     collide_tools.print_table(["law", "caught", "failing tests"], rows)

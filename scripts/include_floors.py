@@ -26,10 +26,11 @@ FLOORS = {
     3: ("cores and the exact decisions: convex cores, the pair decisions, overlaps, tolerances",
         ["detail/convex_core.hpp", "detail/exact_signs.hpp", "decide.hpp", "detail/contact_cores.hpp",
          "overlaps.hpp", "tolerances.hpp"]),
-    4: ("the queries, side by side: contact, resolve, distance, contains, raycast",
-        ["contact.hpp", "resolve.hpp", "distance.hpp", "contains.hpp", "raycast.hpp", "detail/contact_base.hpp",
+    4: ("the queries, side by side: contact, resolve, distance, contains, raycast, mass",
+        ["contact.hpp", "resolve.hpp", "distance.hpp", "contains.hpp", "raycast.hpp", "mass.hpp", "detail/contact_base.hpp",
          "detail/contact_circle.hpp", "detail/contact_hulls.hpp", "detail/contact_pairs.hpp",
-         "detail/contact_local.hpp", "detail/contains_point.hpp"]),
+         "detail/contact_local.hpp", "detail/contains_point.hpp", "detail/contains_shape.hpp",
+         "detail/witness.hpp"]),
     5: ("placement: shapes and compounds posed by transforms, and the queries on them",
         ["transformed.hpp", "detail/placement.hpp"]),
     6: ("casts, the world and the umbrella headers",
@@ -38,7 +39,7 @@ FLOORS = {
 }
 
 # The query headers of floor 4: none may reach another through its includes.
-QUERIES = ["contact.hpp", "resolve.hpp", "distance.hpp", "contains.hpp", "raycast.hpp"]
+QUERIES = ["contact.hpp", "resolve.hpp", "distance.hpp", "contains.hpp", "raycast.hpp", "mass.hpp"]
 
 # The broadphase index structures: their closure stays small and never reaches the contact engine.
 BROADPHASE = ["broadphase/common.hpp", "broadphase/tree.hpp", "broadphase/grid.hpp", "broadphase/sweep.hpp",

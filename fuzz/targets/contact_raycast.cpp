@@ -1,8 +1,9 @@
-// Fuzz target contact_raycast: contact(), distance() and raycast() against the exact oracle
-// (laws "contact", "distance" and "raycast"). Shapes placed by transforms: the same queries with
-// transforms judged on the exact images (laws "placed_outputs", "placed_separation",
-// "placed_feature_ids", "placed_speculative" and "placed_shape", the ray's origin as the point for
-// contains()).
+// Fuzz target contact_raycast: contact(), distance(), closest_points(), raycast() and
+// signed_distance() against the exact oracle (laws "contact", "distance", "closest_points",
+// "raycast" and "signed_distance", the ray's origin as the point). Shapes placed by transforms: the
+// same queries with transforms judged on the exact images (laws "placed_outputs",
+// "placed_separation", "placed_feature_ids", "placed_speculative" and "placed_shape", the ray's
+// origin as the point for contains() and signed_distance()).
 //
 // Input: flags byte (bit 0: double; bit 6: a transform follows each shape), shape a [xa], shape b
 // [xb], then a ray cast at a: origin x y, direction x y, max_t (raw bit patterns of the scalar).
@@ -69,6 +70,7 @@ void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const T
     } else {
       require(laws::Law::Contact, laws::contact_law(a, b), a, some(b));
       require(laws::Law::Distance, laws::distance_law(a, b), a, some(b));
+      require(laws::Law::ClosestPoints, laws::closest_points_law(a, b), a, some(b));
     }
   } catch (const oracle::Unsupported&) {
     // not judged
@@ -91,6 +93,14 @@ void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const T
     if (placed) {
       require_placed("placed_shape", laws::placed_shape(a, xa, ray.ray.origin, ray.ray, ray.max_t), a, xa);
       return;
+    }
+    // The ray's origin as a point: its signed distance to a.
+    const laws::Verdict sd = laws::signed_distance_law(a, ray.ray.origin);
+    if (!sd.ok) {
+      fail(laws::Law::SignedDistance, a, std::optional<Shape<T>>(), sd, [&](laws::Case& c) {
+        c.px = ray.ray.origin.x();
+        c.py = ray.ray.origin.y();
+      });
     }
     const laws::Verdict v = laws::raycast_law(a, ray.ray, ray.max_t);
     if (!v.ok) {

@@ -19,6 +19,9 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace bp = collide::broadphase;
@@ -592,15 +595,85 @@ void check_world_ray(const std::vector<collide::Shape<T>>& shapes, const Vec2<T>
   RC_CLASSIFY(expected.has_value(), "hit");
 }
 
-/// The persistent World over a random script of add / move / remove / set_filter between steps:
-/// each step reports exactly the pairs whose overlaps() (and filters) began or ended, each once;
-/// point, shape and ray queries match every shape tested directly.
+/// A body's shape in its own frame, near its origin so that bodies meet often: any primitive kind
+/// on a quarter-unit grid, or a compound of two of them.
+template <class T>
+rc::Gen<collide::Shape<T>> gen_body_shape() {
+  using S = collide::Shape<T>;
+  using Pr = collide::Primitive<T>;
+  const auto c = [](int v) { return T(v) / 4; };
+  const auto primitive =
+      rc::gen::oneOf(
+          rc::gen::apply([c](int x, int y, int r) { return Pr(collide::Circle<T>(Vec2<T>(c(x), c(y)), c(r))); },
+                         rc::gen::inRange(-4, 5), rc::gen::inRange(-4, 5), rc::gen::inRange(0, 8)),
+          rc::gen::apply([c](int x, int y, int w,
+                             int h) { return Pr(collide::Aabb<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + w), c(y + h)))); },
+                         rc::gen::inRange(-6, 3), rc::gen::inRange(-6, 3), rc::gen::inRange(0, 10),
+                         rc::gen::inRange(0, 10)),
+          rc::gen::apply(
+              [c](int x, int y, int w, int h, int turn) {
+                return Pr(collide::Obb<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(w), c(h)), T(turn) / 5));
+              },
+              rc::gen::inRange(-4, 5), rc::gen::inRange(-4, 5), rc::gen::inRange(0, 6), rc::gen::inRange(0, 6),
+              rc::gen::inRange(-8, 9)),
+          rc::gen::apply(
+              [c](int x, int y, int dx, int dy, int r) {
+                return Pr(collide::Capsule<T>(Vec2<T>(c(x), c(y)), Vec2<T>(c(x + dx), c(y + dy)), c(r)));
+              },
+              rc::gen::inRange(-4, 5), rc::gen::inRange(-4, 5), rc::gen::inRange(-6, 7), rc::gen::inRange(-6, 7),
+              rc::gen::inRange(0, 4)),
+          rc::gen::apply(
+              [c](int x, int y, int w, int h) {  // a triangle: never degenerate, w, h > 0
+                return Pr(collide::ConvexPolygon<T>::make(
+                              {Vec2<T>(c(x), c(y)), Vec2<T>(c(x + w), c(y)), Vec2<T>(c(x), c(y + h))})
+                              .value());
+              },
+              rc::gen::inRange(-6, 3), rc::gen::inRange(-6, 3), rc::gen::inRange(1, 10), rc::gen::inRange(1, 10)));
+  return rc::gen::weightedOneOf<S>(
+      {{4, rc::gen::map(primitive, [](const Pr& p) { return std::visit([](const auto& x) { return S(x); }, p); })},
+       {1, rc::gen::map(rc::gen::pair(primitive, primitive), [](const std::pair<Pr, Pr>& p) {
+          return S(collide::Compound<T>({p.first, p.second}));
+        })}});
+}
+
+/// A body's transform: the identity half the time (a world-space body), else a position on a
+/// quarter-unit grid and an angle from a few turns (zero, exact quarter turns and others).
+template <class T>
+rc::Gen<collide::Transform<T>> gen_body_transform() {
+  return rc::gen::weightedOneOf<collide::Transform<T>>(
+      {{1, rc::gen::just(collide::Transform<T>())},
+       {1, rc::gen::apply(
+               [](int x, int y, int turn) {
+                 const Vec2<T> p(T(x) / 4, T(y) / 4);
+                 return collide::Transform<T>::make(p, T(turn) * T(0.3927)).value();  // about pi/8
+               },
+               rc::gen::inRange(-12, 13), rc::gen::inRange(-12, 13), rc::gen::inRange(-8, 9))}});
+}
+
+/// Field-wise identity of two contacts (every output bit for bit; NaN never occurs).
+template <class T>
+bool same_contact(const collide::Contact<T>& x, const collide::Contact<T>& y) {
+  if (x.normal != y.normal || x.depth != y.depth || x.count != y.count) return false;
+  for (int k = 0; k < x.count; ++k)
+    if (x.points[std::size_t(k)] != y.points[std::size_t(k)] || !(x.ids[std::size_t(k)] == y.ids[std::size_t(k)]) ||
+        x.separations[std::size_t(k)] != y.separations[std::size_t(k)])
+      return false;
+  return true;
+}
+
+/// The persistent World over a random script of add / move / set_shape / remove / set_filter
+/// between steps, bodies placed by transforms, with a speculative distance or none: each step
+/// reports exactly the pairs whose contact() (and filters) began or ended, each once; every
+/// contact it keeps is contact() of the placed shapes bit for bit and keeps its ContactId while
+/// it lasts; point, shape and ray queries match every placed shape tested directly.
 template <class T, class BP>
 void check_world_steps(BP structure) {
   using P = std::pair<std::size_t, std::size_t>;
-  bp::World<T, BP> w(std::move(structure));
+  const T speculative = *rc::gen::element(T(0), T(0), T(0.25), T(1));
+  bp::World<T, BP> w(std::move(structure), speculative);
   struct Body {
     collide::Shape<T> shape;
+    collide::Transform<T> x;
     bp::Filter filter;
     bool live;
   };
@@ -608,6 +681,8 @@ void check_world_steps(BP structure) {
   std::vector<bp::ProxyId> ids;
   std::map<bp::ProxyId, std::size_t> index;
   std::vector<P> reported;
+  std::map<P, bp::ContactId> contact_ids;  ///< the id of each contact at the last step
+  std::set<bp::ContactId> issued;          ///< every id a contact has had
   const int steps = *rc::gen::inRange(1, 6);
   for (int step = 0; step < steps; ++step) {
     const int ops = *rc::gen::inRange(0, 10);
@@ -615,20 +690,29 @@ void check_world_steps(BP structure) {
       std::vector<std::size_t> live;
       for (std::size_t i = 0; i < model.size(); ++i)
         if (model[i].live) live.push_back(i);
-      const int op = live.empty() ? 0 : *rc::gen::inRange(0, 4);
+      const int op = live.empty() ? 0 : *rc::gen::inRange(0, 6);
       if (op == 0) {
-        const auto shape = *gen_shape<T>();
+        const auto shape = *gen_body_shape<T>();
+        const auto x = *gen_body_transform<T>();
         const bp::Filter f = *gen_filter();
-        ids.push_back(w.add(shape, model.size(), f));
+        ids.push_back(w.add(shape, x, model.size(), f));
         index[ids.back()] = model.size();
-        model.push_back({shape, f, true});
+        model.push_back({shape, x, f, true});
         continue;
       }
       const std::size_t k = *rc::gen::elementOf(live);
       if (op == 1) {
-        model[k].shape = *gen_shape<T>();
-        w.move(ids[k], model[k].shape);
+        model[k].x = *gen_body_transform<T>();
+        w.move(ids[k], model[k].x);
       } else if (op == 2) {
+        model[k].shape = *gen_body_shape<T>();
+        model[k].x = collide::Transform<T>();
+        w.move(ids[k], model[k].shape);
+      } else if (op == 3) {
+        model[k].shape = *gen_body_shape<T>();
+        model[k].x = *gen_body_transform<T>();
+        w.set_shape(ids[k], model[k].shape, model[k].x);
+      } else if (op == 4) {
         model[k].live = false;
         w.remove(ids[k]);
       } else {
@@ -636,12 +720,17 @@ void check_world_steps(BP structure) {
         w.set_filter(ids[k], model[k].filter);
       }
     }
+    const auto contact_of = [&](std::size_t i, std::size_t j) {  // i the body of the lower slot
+      return collide::contact(model[i].shape, model[i].x, model[j].shape, model[j].x, speculative);
+    };
+    const auto by_slot = [&](std::size_t i, std::size_t j) { return ids[i].index < ids[j].index ? P(i, j) : P(j, i); };
     std::vector<P> now;
     for (std::size_t i = 0; i < model.size(); ++i)
-      for (std::size_t j = i + 1; j < model.size(); ++j)
-        if (model[i].live && model[j].live && bp::accepts(model[i].filter, model[j].filter) &&
-            collide::overlaps(model[i].shape, model[j].shape))
-          now.emplace_back(i, j);
+      for (std::size_t j = i + 1; j < model.size(); ++j) {
+        if (!model[i].live || !model[j].live || !bp::accepts(model[i].filter, model[j].filter)) continue;
+        const auto [lo, hi] = by_slot(i, j);
+        if (contact_of(lo, hi)) now.emplace_back(i, j);
+      }
     std::vector<P> began, ended;
     std::set_difference(now.begin(), now.end(), reported.begin(), reported.end(), std::back_inserter(began));
     std::set_difference(reported.begin(), reported.end(), now.begin(), now.end(), std::back_inserter(ended));
@@ -655,27 +744,57 @@ void check_world_steps(BP structure) {
     };
     RC_ASSERT(as_model(e.began) == began);
     RC_ASSERT(as_model(e.ended) == ended);
+    // Every contact: the pair query's answer bit for bit, its id kept while it lasts and unique.
     std::vector<bp::ProxyPair> current;
-    w.for_each_contact([&](bp::ProxyId a, bp::ProxyId b) { current.push_back(bp::ordered_pair(a, b)); });
+    std::map<P, bp::ContactId> now_ids;
+    std::set<bp::ContactId> seen;
+    w.for_each_contact([&](const bp::BodyContact<T>& c) {
+      RC_ASSERT(c.a.index < c.b.index);
+      current.push_back({c.a, c.b});
+      const std::size_t i = index.at(c.a), j = index.at(c.b);
+      const auto want = contact_of(i, j);
+      RC_ASSERT(want.has_value());
+      RC_ASSERT(same_contact(c.contact, *want));
+      RC_ASSERT(seen.insert(c.id).second);
+      RC_ASSERT(c.id.index < w.contact_capacity());
+      const P key(std::min(i, j), std::max(i, j));
+      now_ids[key] = c.id;
+      const auto before = contact_ids.find(key);
+      const bool lasted = before != contact_ids.end() && !std::binary_search(began.begin(), began.end(), key);
+      if (lasted) {
+        RC_ASSERT(before->second == c.id);  // the same contact keeps its id
+      } else {
+        RC_ASSERT(issued.insert(c.id).second);  // a new contact never gets an id issued before
+      }
+      const bp::BodyContact<T>* found = w.find_contact(c.b, c.a);
+      RC_ASSERT(found != nullptr && found->id == c.id);
+    });
+    std::vector<bp::ProxyPair> pairs_only;
+    w.for_each_contact([&](bp::ProxyId a, bp::ProxyId b) { pairs_only.push_back({a, b}); });
+    RC_ASSERT(pairs_only == current);
     RC_ASSERT(as_model(current) == now);
+    RC_ASSERT(w.contact_count() == now.size());
     reported = now;
+    contact_ids = now_ids;
     ++g_stats.world_steps;
     g_stats.world_events += long(began.size() + ended.size());
   }
-  // Queries against the final state.
-  const Vec2<T> p(T(*rc::gen::inRange(-40, 41)) / 4, T(*rc::gen::inRange(-40, 41)) / 4);
-  const auto probe = *gen_shape<T>();
+  // Queries against the final state: each answer is the placed query's on every body.
+  const Vec2<T> p(T(*rc::gen::inRange(-16, 17)) / 4, T(*rc::gen::inRange(-16, 17)) / 4);
+  const auto probe = *gen_body_shape<T>();
+  const auto probe_x = *gen_body_transform<T>();
   const bp::Filter qf = *gen_query_filter();
   std::vector<std::size_t> want_point, want_shape, got_point, got_shape;
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (!model[i].live || !bp::accepts(model[i].filter, qf)) continue;
-    if (collide::contains(model[i].shape, p)) want_point.push_back(i);
-    if (collide::overlaps(probe, model[i].shape)) want_shape.push_back(i);
+    RC_ASSERT(w.transform(ids[i]) == model[i].x);
+    if (collide::contains(model[i].shape, model[i].x, p)) want_point.push_back(i);
+    if (collide::overlaps(probe, probe_x, model[i].shape, model[i].x)) want_shape.push_back(i);
   }
   w.query_point(
       p, [&](bp::ProxyId id) { got_point.push_back(index.at(id)); }, qf);
   w.query_shape(
-      probe, [&](bp::ProxyId id) { got_shape.push_back(index.at(id)); }, qf);
+      probe, probe_x, [&](bp::ProxyId id) { got_shape.push_back(index.at(id)); }, qf);
   std::sort(got_point.begin(), got_point.end());
   std::sort(got_shape.begin(), got_shape.end());
   RC_ASSERT(got_point == want_point);
@@ -685,13 +804,14 @@ void check_world_steps(BP structure) {
   std::optional<collide::Calc> want_t;
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (!model[i].live || !bp::accepts(model[i].filter, qf)) continue;
-    const auto h = collide::raycast(model[i].shape, ray, max_t);
+    const auto h = collide::raycast(model[i].shape, model[i].x, ray, max_t);
     if (h && (!want_t || h->t < *want_t)) want_t = h->t;
   }
   const auto hit = w.raycast(ray, max_t, qf);
   RC_ASSERT(hit.has_value() == want_t.has_value());
   if (hit) RC_ASSERT(collide::Calc(hit->hit.t) == *want_t);
   RC_CLASSIFY(!reported.empty(), "contacts at the end");
+  RC_CLASSIFY(speculative > 0, "speculative");
 }
 
 }  // namespace

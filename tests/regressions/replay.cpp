@@ -128,7 +128,7 @@ int round_trip_other_suites() {
     if (row.law == Law::PlacedAgreement || row.law == Law::PlacedOutputs || row.law == Law::PlacedResolution ||
         row.law == Law::PlacedSeparation || row.law == Law::PlacedFeatureIds || row.law == Law::PlacedSpeculative)
       c.transform_b = xb;
-    if (row.law == Law::Cast || row.law == Law::CastSymmetry) c.transform_b = xb;
+    if (row.law == Law::Cast || row.law == Law::CastLeaving || row.law == Law::CastSymmetry) c.transform_b = xb;
     c.px = 0.5;
     c.py = 0;
     c.ox = -3;

@@ -18,6 +18,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <utility>
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -352,6 +353,73 @@ TYPED_TEST(Allocation, NarrowphaseAllocatesOnlyToGrowItsBuffers) {
   EXPECT_GT(allocations_in([&] { run(grown, pairs); }), 0) << "the first batch had no buffers to fill";
   EXPECT_EQ(0, allocations_in([&] { run(grown, std::span<const bp::ShapePair>(pairs).first(pairs.size() / 2)); }))
       << "a smaller batch after a larger one";
+}
+
+TYPED_TEST(Allocation, WorldMovesAndStepsAllocateNothingOnceItsBuffersHaveGrown) {
+  using T = TypeParam;
+  namespace bp = collide::broadphase;
+  // Bodies of every kind (compounds included) in their own frames, turning on a circle and
+  // meeting each other; the motion repeats after 60 frames, so the second round asks nothing of
+  // the buffers that the first did not.
+  bp::World<T> world(bp::DynamicTree<T>(T(0.1)), T(0.05));
+  std::vector<bp::ProxyId> ids;
+  for (int copy = 0; copy < 3; ++copy) {
+    for_each_kind(
+        [&]<ShapeKind K>() { ids.push_back(world.add(make_kind<K, T>(Vec2<T>(0, 0), T(1)), Transform<T>())); });
+  }
+  const auto frame = [&](int f) {
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const T a = T(0.1) * T((f + int(i) * 7) % 60), r = T(1) + T(i % 5);
+      world.move(ids[i], Transform<T>(Vec2<T>(r * std::cos(a), r * std::sin(a)), T(0.3) * T(f % 60)));
+    }
+    world.step();
+    std::size_t points = 0;
+    world.for_each_contact([&](const bp::BodyContact<T>& c) { points += std::size_t(c.contact.count); });
+    return points;
+  };
+  std::size_t points = 0;
+  for (int f = 0; f < 120; ++f) points += frame(f);
+  EXPECT_GT(points, 0u) << "no body met another: the steps computed no contact";
+  EXPECT_EQ(0, allocations_in([&] {
+              for (int f = 0; f < 120; ++f) frame(f);
+            }))
+      << "a World's move() and step() allocated in a frame the buffers had already seen";
+}
+
+// The character mover: move_and_slide() keeps its planes and path in fixed arrays and visits the
+// broadphase's candidates without storing them, so no move allocates, whatever it meets: a
+// resting contact and its lift, hits, slides along a floor and into a corner, bodies of every
+// kind (compounds included), for a circle and a capsule.
+TYPED_TEST(Allocation, MoveAndSlideAllocatesNothing) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  namespace bp = collide::broadphase;
+  bp::World<T> world;
+  world.add(Aabb<T>(V(-50, -1), V(50, 0)));  // the floor
+  world.add(Aabb<T>(V(6, 0), V(7, 10)));     // a wall
+  int slot = 0;
+  for_each_kind([&]<ShapeKind K>() {
+    world.add(make_kind<K, T>(Vec2<T>(0, 0), T(0.5)), Transform<T>(V(T(-8 + 2 * slot++), T(3)), T(0.3)));
+  });
+  const Shape<T> ball = Circle<T>(V(0, 0), T(0.5));
+  const Shape<T> pill = Capsule<T>(V(0, T(-0.5)), V(0, T(0.5)), T(0.25));
+  const std::vector<std::pair<V, V>> moves = {
+      {V(0, T(0.5)), V(3, 0)},    // resting on the floor: a lift, then a slide
+      {V(0, T(0.75)), V(9, -2)},  // down onto the floor, along it, into the wall's corner
+      {V(-9, 5), V(16, -3)},      // among the bodies of every kind
+      {V(2, 4), V(-3, T(-0.5))}};
+  std::size_t planes = 0;
+  const long n = allocations_in([&] {
+    for (const Shape<T>* mover : {&ball, &pill}) {
+      for (const auto& [start, d] : moves) {
+        const bp::MoveResult<T> r = bp::move_and_slide(world, *mover, Transform<T>(start, T(0)), d);
+        planes += r.plane_count;
+        keep(r);
+      }
+    }
+  });
+  EXPECT_EQ(n, 0) << "move_and_slide allocated";
+  EXPECT_GE(planes, 8u) << "the moves met too little to exercise the mover";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Re-entrancy and thread safety of the broadphase structures' const queries: a query or raycast
 // made from inside another one's callback (same structure or another) gives the exact answer, and
-// many threads querying one structure that nobody modifies get the single-threaded answers.
+// many threads querying one structure that nobody modifies get the single-threaded answers; the
+// same for a World's contacts and queries, some of them asked from inside its own callbacks.
 // Also built with -fsanitize=thread by the broadphase_tsan test (tests/unit/broadphase_tsan).
 
 #include "broadphase_support.hpp"
@@ -151,6 +152,64 @@ TYPED_TEST(BroadphaseReentrant, ManyThreadsQueryingGetTheSingleThreadedAnswers) 
   for (int t = 0; t < kThreads; ++t) {
     threads.emplace_back([&, t] {
       for (int r = 0; r < kRounds; ++r) wrong[std::size_t(t)] += answers(c, qs) == want ? 0 : 1;
+    });
+  }
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < kThreads; ++t) EXPECT_EQ(wrong[std::size_t(t)], 0) << "thread " << t;
+}
+
+/// Everything a World's const members answer about its bodies: each contact (bodies, id, normal,
+/// depth), the bodies at each probe point, those meeting each probe shape, each ray's nearest hit,
+/// and for each contact the bodies its first point meets (a query from inside for_each_contact).
+std::vector<double> world_answers(const bp::World<float>& w, const std::vector<Vec2<float>>& probes) {
+  std::vector<double> out;
+  w.for_each_contact([&](const bp::BodyContact<float>& c) {
+    out.insert(out.end(), {double(c.a.index), double(c.b.index), double(c.id.index), double(c.contact.normal.x()),
+                           double(c.contact.depth)});
+    const bp::BodyContact<float>* again = w.find_contact(c.b, c.a);
+    out.push_back(again != nullptr && again->id == c.id ? 1 : 0);
+    w.query_point(c.contact.points[0], [&](bp::ProxyId id) { out.push_back(double(id.index)); });
+  });
+  for (const Vec2<float>& p : probes) {
+    w.query_point(p, [&](bp::ProxyId id) { out.push_back(double(id.index)); });
+    w.query_shape(Circle<float>(p, 1.5f), [&](bp::ProxyId id) { out.push_back(double(id.index)); });
+    const auto hit = w.raycast(Ray<float>{p, Vec2<float>(1, 0.5f)}, 10.0f);
+    out.push_back(hit ? double(hit->hit.t) : -1.0);
+  }
+  return out;
+}
+
+TEST(WorldThreads, ManyThreadsReadingAWorldGetTheSingleThreadedAnswers) {
+  bp::World<float> world(bp::DynamicTree<float>(0.1f), 0.05f);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> pos(0, 30), turn(-3, 3), size(0.3f, 1.2f);
+  const Obb<float> crate(Vec2<float>(0, 0), Vec2<float>(1, 0.5f), 0.0f);
+  const Capsule<float> stick(Vec2<float>(-1, 0), Vec2<float>(1, 0), 0.3f);
+  std::vector<bp::ProxyId> ids;
+  for (int i = 0; i < 600; ++i) {
+    const Transform<float> x(Vec2<float>(pos(rng), pos(rng)), turn(rng));
+    if (i % 3 == 0) {
+      ids.push_back(world.add(crate, x));
+    } else if (i % 3 == 1) {
+      ids.push_back(world.add(stick, x));
+    } else {
+      ids.push_back(world.add(Circle<float>(Vec2<float>(0, 0), size(rng)), x));
+    }
+  }
+  world.step();
+  for (std::size_t i = 0; i < ids.size(); i += 2)
+    world.move(ids[i], Transform<float>(Vec2<float>(pos(rng), pos(rng)), turn(rng)));
+  world.step();
+  std::vector<Vec2<float>> probes;
+  for (int i = 0; i < 200; ++i) probes.emplace_back(pos(rng), pos(rng));
+  const std::vector<double> want = world_answers(world, probes);
+  ASSERT_GT(world.contact_count(), 100u) << "the scene is built to have many contacts";
+  constexpr int kThreads = 4, kRounds = 5;
+  std::vector<int> wrong(kThreads, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      for (int r = 0; r < kRounds; ++r) wrong[std::size_t(t)] += world_answers(world, probes) == want ? 0 : 1;
     });
   }
   for (auto& th : threads) th.join();

@@ -393,6 +393,62 @@ TYPED_TEST(Cast, PlacedCompoundWithChildTransformsMeetsAtTheKnownTime) {
   EXPECT_EQ(shape_cast(ball, beside, up, body, xc, still, T(4)).outcome, CastOutcome::Miss);
 }
 
+TYPED_TEST(Cast, LeavingAnOverlapIsNoHitWhenTheStartIsNotAStop) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  CastOptions leave;
+  leave.stop_at_overlap = false;
+  // A ball 0.1 inside the right face of a box, depth 0.6 along x: contact()'s normal is -x (from
+  // the ball toward the box).
+  const Circle<T> ball(V(T(1.9), 1), T(0.5));
+  const Aabb<T> box(V(0, 0), V(2, 2));
+  ASSERT_TRUE(overlaps(ball, box));
+  // Moving out along +x: the default stops at t = 0; leaving, the pair never begins to touch again.
+  EXPECT_EQ(shape_cast(ball, V(1, 0), box, V(0, 0), T(1)).t, T(0));
+  const CastResult<T> out = shape_cast(ball, V(1, 0), box, V(0, 0), T(1), leave);
+  EXPECT_EQ(out.outcome, CastOutcome::Miss);
+  EXPECT_EQ(out.t, T(1));
+  // Sliding along the face (n . w = 0) leaves too; moving deeper (n . w > 0) still hits at t = 0
+  // with contact()'s normal, as without the option.
+  EXPECT_EQ(shape_cast(ball, V(0, 1), box, V(0, 0), T(1), leave).outcome, CastOutcome::Miss);
+  const CastResult<T> in = shape_cast(ball, V(-1, 0), box, V(0, 0), T(1), leave);
+  const CastResult<T> stop = shape_cast(ball, V(-1, 0), box, V(0, 0), T(1));
+  ASSERT_EQ(in.outcome, CastOutcome::Hit);
+  EXPECT_EQ(in.t, T(0));
+  EXPECT_EQ(in.normal, stop.normal);
+  EXPECT_EQ(in.point, stop.point);
+  // Only the relative motion counts: the box moving -x carries the ball out as well.
+  EXPECT_EQ(shape_cast(ball, V(0, 0), box, V(-1, 0), T(1), leave).outcome, CastOutcome::Miss);
+}
+
+TYPED_TEST(Cast, LeavingAnOverlapStillMeetsWhatLiesAhead) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  CastOptions leave;
+  leave.stop_at_overlap = false;
+  // A compound of a floor the ball starts in and a wall ahead, the ball rising out of the floor
+  // toward the wall: the floor is left out and the wall is met at its own first contact.
+  const Circle<T> ball(V(0, T(0.25)), T(0.5));
+  const Compound<T> level = Compound<T>::make({Aabb<T>(V(-8, -1), V(8, 0)), Aabb<T>(V(-8, 4), V(8, 5))}).value();
+  const V v(0, 2);
+  ASSERT_EQ(shape_cast(ball, v, level, V(0, 0), T(4)).t, T(0));
+  const CastResult<T> r = shape_cast(ball, v, level, V(0, 0), T(4), leave);
+  ASSERT_EQ(r.outcome, CastOutcome::Hit);
+  const double exact = (4 - 0.5 - 0.25) / 2.0;  // the ball's top reaches y = 4
+  const double eps = cast_tolerance(ball, v, level, V(0, 0), T(4));
+  EXPECT_LE(double(r.t), exact);
+  EXPECT_GE(double(r.t), exact - eps / 2);
+  EXPECT_NEAR(double(r.normal.y()), 1.0, 1e-6);
+  // Without an overlap at the start the option changes nothing, bit for bit.
+  const Circle<T> clear(V(0, 2), T(0.5));
+  const CastResult<T> a = shape_cast(clear, v, level, V(0, 0), T(4), leave);
+  const CastResult<T> b = shape_cast(clear, v, level, V(0, 0), T(4));
+  EXPECT_EQ(a.outcome, b.outcome);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.point, b.point);
+}
+
 TEST(CastRegression, StepAxisFromClosestPointsLosesSeparationAlongASliver) {
   using V = Vec2<double>;
   // At a gap of 5e-7, 1e6 from the origin, the closest points' direction is off by 2e-4 rad and
@@ -406,6 +462,37 @@ TEST(CastRegression, StepAxisFromClosestPointsLosesSeparationAlongASliver) {
   const double eps = cast_tolerance(a, va, b, V(0, 0), 0.25);
   EXPECT_LE(distance(translated(a, V(va * r.t)).value(), b), eps);
   EXPECT_FALSE(overlaps(translated(a, V(va * r.t)).value(), b));
+}
+
+TEST(CastRegression, SlidingPastALongSliverStepsByTheGapUntilTheIterationLimit) {
+  // A small quadrilateral drifting along a sliver 2000 long, a few target separations off it:
+  // rounding leaves the closest points' direction separating by no more than the target, so each
+  // step is the gap over |w|, and after kCastMaxIterations of them the cast stops undecided, at a
+  // time up to which the two are apart, in either order.
+  using V = Vec2<double>;
+  const auto a = ConvexPolygon<double>::make(
+                     {V(-0x1.e9df70f795615p+9, -0x1.b4cd2b17431d4p+6), V(-0x1.e9db734ff5461p+9, -0x1.b4cf5533dc097p+6),
+                      V(-0x1.e9db2e0c62288p+9, -0x1.b4af67f6db2f6p+6), V(-0x1.e9df2bb40243cp+9, -0x1.b4ad3dda42433p+6)})
+                     .value();
+  const auto b = ConvexPolygon<double>::make(
+                     {V(-0x1.e9dae8c8cea17p+9, -0x1.b48f7ab9da8e8p+6), V(-0x1.e9d6eb212e863p+9, -0x1.b491a4d6737abp+6),
+                      V(-0x1.5f4fc4e623c8ep+9, 0x1.f12f42e6ee24p+11), V(-0x1.5f53c28dc3e42p+9, 0x1.f12f5437d2eb6p+11)})
+                     .value();
+  const V w(0x1.7992f95c93e5ap-9, 0x1.5c147ad139a48p-5);
+  const double max_t = 0x1p+16;
+  const CastResult<double> r = shape_cast(a, w, b, V(0, 0), max_t);
+  ASSERT_EQ(r.outcome, CastOutcome::IterationLimit);
+  EXPECT_EQ(r.iterations, kCastMaxIterations);
+  EXPECT_GT(r.t, max_t / 8);
+  EXPECT_EQ(shape_cast(b, V(0, 0), a, w, max_t).t, r.t);
+  // The first step (the faces') ends at t = 8295.68221, where the closest points' direction no
+  // longer separates by more than the target: the gap bound carries each step after it, which
+  // all move t on.
+  EXPECT_GT(r.t, 8295.6823);
+  for (int i = 0; i <= 256; ++i) {
+    const double s = r.t * i / 256;
+    EXPECT_FALSE(overlaps(moved_by(a, V(w * s)), b)) << "at s = " << s;
+  }
 }
 
 TEST(CastRegression, HitPointAlongTheClosestPointsNotTheFaceNormal) {
@@ -437,6 +524,40 @@ void expect_prompt_hit(const A& a, const Sweep<T>& sa, const B& b, const Sweep<T
   };
   EXPECT_FALSE(overlaps(as_double(a), at(sa), as_double(b), at(sb)));
   EXPECT_LE(distance(as_double(a), at(sa), as_double(b), at(sb)), 2 * toi_tolerance(a, sa, b, sb, T(1)));
+}
+
+TEST(TimeOfImpact, BodyWhirledPastTheOtherStopsAtTheIterationLimitApartSoFar) {
+  // A speck of a box whirled about the origin 145 turns per unit time, 14 from it, while another
+  // small box drifts beside its orbit: every step is bounded by the whirl's speed, and after
+  // kCastMaxIterations of them the query stops undecided, at a time up to which the two are apart.
+  using V = Vec2<double>;
+  const Obb<double> drifting = Obb<double>::make_with_axis(V(-0x1.a3115325cccp+0, -0x1.c4fce933c86e5p+3),
+                                                           V(0x1.0925805914abfp-23, 0x1.2fba5d9d59f1ep-22),
+                                                           V(-0x1.363984abbda92p-2, 0x1.e7f04dc3d17f9p-1))
+                                   .value();
+  const Obb<double> speck = Obb<double>::make_with_axis(V(-0x1.a311621ef846ep+0, -0x1.c4fcea528c0a1p+3),
+                                                        V(0x1.77e27b3f8df7fp-34, 0x1.da87749a3c972p-34),
+                                                        V(0x1.fbf2953434d7dp-1, 0x1.01294c84f68bp-3))
+                                .value();
+  const V c0 = drifting.center();
+  const Sweep<double> drift{c0, c0, V(-0x1.a311533453492p+0, -0x1.c4fce934de9e8p+3), 0, 0};
+  const Sweep<double> whirl{V(0, 0), V(0, 0), V(0, 0), 0, 0x1.c9616cfae23f4p+9};
+  for (const bool swapped : {false, true}) {
+    const CastResult<double> r =
+        swapped ? time_of_impact(speck, whirl, drifting, drift) : time_of_impact(drifting, drift, speck, whirl);
+    ASSERT_EQ(r.outcome, CastOutcome::IterationLimit);
+    EXPECT_EQ(r.iterations, kCastMaxIterations);
+    ASSERT_GT(r.t, 0.0);
+    // Apart at every sampled pose up to t.
+    for (int i = 0; i <= 512; ++i) {
+      const double s = r.t * i / 512;
+      const SweepPose pa = sweep_pose(drift, s), pb = sweep_pose(whirl, s);
+      const auto xa = Transform<double>::make_with_rotation(pa.position, pa.rotation);
+      const auto xb = Transform<double>::make_with_rotation(pb.position, pb.rotation);
+      ASSERT_TRUE(xa && xb);
+      EXPECT_FALSE(overlaps(drifting, *xa, speck, *xb)) << "at s = " << s;
+    }
+  }
 }
 
 TEST(TimeOfImpact, CornerBehindTheSupportThatTurnsFasterBoundsTheStep) {

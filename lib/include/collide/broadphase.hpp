@@ -8,6 +8,8 @@
 /// - PairTracker<BP, T>: any of the three plus pair events (pairs that began / ended per update).
 /// - World<T, BP>: persistent bodies (shape, user data, filter); step() reports contacts that
 ///   began / ended; point, shape and ray queries settled by the exact predicates.
+/// - move_and_slide(world, mover, from, displacement): a circle or capsule moved among a World's
+///   bodies, stopping in front of what it meets and sliding along it (a character controller).
 ///
 /// Interface (each structure): add(box[, user[, filter]]) -> ProxyId, move(id, box), remove(id),
 /// set_filter(id, filter), query(box, f(id)[, filter]), query_point(p, f(id)[, filter]),
@@ -28,6 +30,7 @@
 #include "collide/broadphase/common.hpp"
 #include "collide/broadphase/events.hpp"
 #include "collide/broadphase/grid.hpp"
+#include "collide/broadphase/mover.hpp"
 #include "collide/broadphase/narrowphase.hpp"
 #include "collide/broadphase/sweep.hpp"
 #include "collide/broadphase/tree.hpp"

@@ -40,6 +40,20 @@
 /// No allocation for shapes of at most 8 vertices (a compound's children are imaged one at a
 /// time, never copied).
 ///
+/// Leaving an overlap (CastOptions::stop_at_overlap = false): the start is ignored when the
+/// motion does not close along the contact normal, so that a cast can carry shapes out of an
+/// overlap. Exactly: when contact(a, xa, b, xb) exists (the computed images overlap at the start)
+/// and its normal n satisfies n . (va - vb) <= 0 (in double), every pair of primitives that
+/// touches at the start (whose advancement stops at s = 0: overlapping, or within eps) is left
+/// out, and the answer is the first contact of the others, under the contract above: each pair
+/// apart by more than eps at the start is apart on [0, t] (on [0, max_t] after a Miss), and a Hit
+/// is within eps of a pair that did not overlap at the start. Two convex primitives meet over one
+/// interval of time, so a pair left out never begins to touch again after it has come apart;
+/// between two primitives the answer is then a Miss. Otherwise (no contact at the start, or a
+/// motion that closes along n) the answer is the default one, bit for bit. The option decides the
+/// shapes as a whole, by contact()'s normal: for compounds, pairs of children that touch at the
+/// start are left out with the rest.
+///
 /// Method: conservative advancement on the dilated cores (detail/convex_core.hpp). Along any unit axis n
 /// the separation is at most the gap and falls no faster than the closing speed n . w (plus its
 /// rounding), so the time it takes to fall to target is a safe step, and the largest over all
@@ -51,8 +65,8 @@
 /// points are two vertices, each in the other's normal cone, the next step reaches the disc of
 /// that corner of the difference, aimed at 1.5 target: past the face step the motion lies within
 /// every face's offset, where the way into the dilated difference leads through that disc. Else
-/// each step takes the closest points' direction (the gap over |w| when rounding leaves it
-/// separating by no more than target) until the gap is within 2 target.
+/// each step takes the closest points' direction, and never less than the gap over |w| (which
+/// always moves s), until the gap is within 2 target.
 /// The start needs no separate test: shapes that overlap stop at s = 0, and contact() gives them
 /// their normal and point.
 
@@ -71,6 +85,13 @@
 #include <type_traits>
 
 namespace collide {
+
+/// Options of shape_cast().
+struct CastOptions {
+  /// true: shapes touching at the start hit at t = 0. false: the start is left out when the
+  /// motion leaves the overlap (see "Leaving an overlap" at the top of cast.hpp).
+  bool stop_at_overlap = true;
+};
 
 namespace detail {
 
@@ -163,9 +184,6 @@ inline CoreCast advance_linear(const Core& p, const KeptFaces& fp, const Core& q
     for_each_kept_face(fq, q, [&](const Vec2c& n, unsigned i) { f(FaceAxis{1, i, Vec2c(-n)}); });
   };
   const auto each_axis = [&](auto&& f) { each_face([&](const FaceAxis& face) { f(face.normal); }); };
-  const auto hit = [&](const Core& pm, const Closest& cl, Calc s, int step) {
-    return hit_between(pm, q, cl, s, step, nullptr, each_axis);
-  };
   // Face axes first: under translation the separation along a fixed axis falls exactly linearly,
   // so every face's bound from s = 0 holds at once and the largest is safe. For polygons these
   // are the faces of the Minkowski difference: the largest is the first contact, up to target,
@@ -199,18 +217,20 @@ inline CoreCast advance_linear(const Core& p, const KeptFaces& fp, const Core& q
       const Vec2c d = pm[i] - q[j];
       if (in_vertex_cones(pm, i, q, j, d)) ds = disc_entry_time(d, w, r + 1.5 * target);
     }
-    // Else the closest points' direction; when rounding leaves it separating by no more than
-    // target, the gap itself falls no faster than |w|.
+    // Else the closest points' direction.
     if (!(ds > 0)) {
       const Vec2c n = unit_of(cl.on_q - cl.on_p);
       ds = n == Vec2c::Zero() ? Calc(0) : safe_along(pm, n);
     }
-    if (!(ds > 0)) ds = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
-    if (!(ds > 0)) return hit(pm, cl, s, step);
+    // Never less than the gap over |w|, which falls no faster: where rounding leaves the direction
+    // separating by little more than target (or less), this bound carries the step. It moves s:
+    // gap > 2 target here, and target >= 128 * 2^-53 |w|_max s (the motion's scale M is at least
+    // |w|_max s_max in a cast, and |w|_max / 2 in time of impact, where s <= 1), so it exceeds
+    // 90 * 2^-53 s, beyond half an ulp of s; +inf when w = 0.
+    const Calc by_gap = (gap - target) / (norm_of(w) * (1 + kMotionBoundSlack));
+    if (!(ds > by_gap)) ds = by_gap;
     if (s + ds > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
-    const Calc next = s + ds;
-    if (next == s) return hit(pm, cl, s, step);
-    s = next;
+    s += ds;
   }
   return CoreCast{CastOutcome::IterationLimit, s, Vec2c::Zero(), Vec2c::Zero(), kCastMaxIterations};
 }
@@ -299,19 +319,31 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc cast_tolerance(cons
 /// The first time in [0, max_t] at which a, stored in its local frame and placed by xa, moving at
 /// va meets b placed by xb moving at vb (velocities in world distance per unit of t), with the
 /// normal from a toward b and the point between the surfaces there, in world coordinates. Any
-/// shape types, either order, one scalar. See the contract at the top of cast.hpp.
+/// shape types, either order, one scalar. See the contract at the top of cast.hpp; options: see
+/// CastOptions.
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A>> shape_cast(
     const A& a, const Transform<scalar_of_t<A>>& xa, const Vec2<scalar_of_t<A>>& va, const B& b,
-    const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+    const Transform<scalar_of_t<A>>& xb, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t,
+    const CastOptions& options = {}) {
   using T = scalar_of_t<A>;
   if (!detail::cast_input_valid(va, vb, max_t)) return detail::invalid_cast<T>();
   const Vec2c wa = widen(va), wb = widen(vb), w = wa - wb;
   const Calc s_max = static_cast<Calc>(max_t);
   const Calc target = detail::advance_target(detail::cast_scale(a, xa, b, xb, w, s_max));
   const Calc skin = overlap_tolerance(a, xa, b, xb);
+  // Leaving an overlap: the motion does not close along the contact normal at the start.
+  bool leaving = false;
+  if (!options.stop_at_overlap) {
+    if (const auto c = contact(a, xa, b, xb)) leaving = !(widen(c->normal).dot(w) > 0);
+  }
   const auto step = [&](const detail::Part& p, const detail::Part& q, Calc until) {
-    return detail::cast_cores(p, wa, q, wb, until, target, skin);
+    const detail::CoreCast c = detail::cast_cores(p, wa, q, wb, until, target, skin);
+    // A pair touching at the start is left out: a Miss to the bound, which every other answer beats.
+    if (leaving && c.outcome == CastOutcome::Hit && c.s == 0) {
+      return detail::CoreCast{CastOutcome::Miss, until, Vec2c::Zero(), Vec2c::Zero(), c.iterations};
+    }
+    return c;
   };
   const detail::CoreCast best = xa.is_identity() && xb.is_identity()
                                     ? detail::earliest_over_pairs(a, b, s_max, step)
@@ -321,7 +353,7 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
   CastResult<T> out = detail::to_result<T>(best, s_max);
   // Starting in contact (the computed images overlap, so the advancement stopped at once): the
   // normal and point of contact().
-  if (out.hit() && out.t == T(0)) {
+  if (out.hit() && out.t == T(0) && !leaving) {
     if (const auto c = contact(a, xa, b, xb)) {
       out.point = c->points[0];
       out.normal = c->normal;
@@ -334,9 +366,10 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A
 /// space: shape_cast() with both transforms the identity. See the contract at the top of cast.hpp.
 template <AnyShape A, AnyShape B>
 requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> CastResult<scalar_of_t<A>> shape_cast(
-    const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t) {
+    const A& a, const Vec2<scalar_of_t<A>>& va, const B& b, const Vec2<scalar_of_t<A>>& vb, scalar_of_t<A> max_t,
+    const CastOptions& options = {}) {
   using X = Transform<scalar_of_t<A>>;
-  return shape_cast(a, X(), va, b, X(), vb, max_t);
+  return shape_cast(a, X(), va, b, X(), vb, max_t, options);
 }
 
 }  // namespace collide

@@ -1,8 +1,8 @@
 #pragma once
 /// @file collide.hpp
 /// Umbrella header: shapes, transforms, the registry and every query (overlaps, contact, resolve,
-/// distance, bounds, contains, raycast), world-space and transformed. The broadphase has its own header,
-/// collide/broadphase.hpp.
+/// distance, bounds, contains, raycast, mass properties), world-space and transformed. The broadphase has its own
+/// header, collide/broadphase.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/config.hpp"
@@ -10,6 +10,7 @@
 #include "collide/decide.hpp"
 #include "collide/error.hpp"
 #include "collide/feature.hpp"
+#include "collide/mass.hpp"
 #include "collide/predicates.hpp"
 #include "collide/contact.hpp"
 #include "collide/distance.hpp"

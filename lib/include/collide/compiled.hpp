@@ -18,14 +18,17 @@
 #include "collide/collide.hpp"
 
 /// The world-space queries on Shape<T>: overlaps, contact (plain and speculative), distance,
-/// resolve, contains and raycast. `EXTERN` is `extern` (a declaration) or empty (a definition).
+/// closest points, resolve, contains, signed distance and raycast. `EXTERN` is `extern` (a
+/// declaration) or empty (a definition).
 #define COLLIDE_COMPILED_WORLD_QUERIES(EXTERN, T)                                                             \
   EXTERN template bool overlaps<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&);                        \
   EXTERN template std::optional<Contact<T>> contact<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&);    \
   EXTERN template std::optional<Contact<T>> contact<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&, T); \
   EXTERN template T distance<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&);                           \
+  EXTERN template ClosestPoints<T> closest_points<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&);      \
   EXTERN template Vec2<T> resolve<Shape<T>, Shape<T>>(const Shape<T>&, const Shape<T>&);                      \
   EXTERN template bool contains<Shape<T>>(const Shape<T>&, const Vec2<T>&);                                   \
+  EXTERN template T signed_distance<Shape<T>>(const Shape<T>&, const Vec2<T>&);                               \
   EXTERN template std::optional<RayHit<T>> raycast<Shape<T>>(const Shape<T>&, const Ray<T>&, T);
 
 /// The same queries on shapes placed by transforms (transformed.hpp), and bounds(s, x).
@@ -40,16 +43,20 @@
                                                  const Transform<T>&);                                                \
   EXTERN template Vec2<T> resolve<Shape<T>, Shape<T>>(const Shape<T>&, const Transform<T>&, const Shape<T>&,          \
                                                       const Transform<T>&);                                           \
+  EXTERN template ClosestPoints<T> closest_points<Shape<T>, Shape<T>>(const Shape<T>&, const Transform<T>&,           \
+                                                                      const Shape<T>&, const Transform<T>&);          \
   EXTERN template bool contains<Shape<T>>(const Shape<T>&, const Transform<T>&, const Vec2<T>&);                      \
+  EXTERN template T signed_distance<Shape<T>>(const Shape<T>&, const Transform<T>&, const Vec2<T>&);                  \
   EXTERN template std::optional<RayHit<T>> raycast<Shape<T>>(const Shape<T>&, const Transform<T>&, const Ray<T>&, T); \
   EXTERN template Aabb<T> bounds<Shape<T>>(const Shape<T>&, const Transform<T>&);
 
 /// The queries on moving shapes: shape_cast (world and placed) and time_of_impact.
 #define COLLIDE_COMPILED_MOVING_QUERIES(EXTERN, T)                                                                    \
   EXTERN template CastResult<T> shape_cast<Shape<T>, Shape<T>>(const Shape<T>&, const Vec2<T>&, const Shape<T>&,      \
-                                                               const Vec2<T>&, T);                                    \
-  EXTERN template CastResult<T> shape_cast<Shape<T>, Shape<T>>(                                                       \
-      const Shape<T>&, const Transform<T>&, const Vec2<T>&, const Shape<T>&, const Transform<T>&, const Vec2<T>&, T); \
+                                                               const Vec2<T>&, T, const CastOptions&);                \
+  EXTERN template CastResult<T> shape_cast<Shape<T>, Shape<T>>(const Shape<T>&, const Transform<T>&, const Vec2<T>&,  \
+                                                               const Shape<T>&, const Transform<T>&, const Vec2<T>&,  \
+                                                               T, const CastOptions&);                                \
   EXTERN template CastResult<T> time_of_impact<Shape<T>, Shape<T>>(const Shape<T>&, const Sweep<T>&, const Shape<T>&, \
                                                                    const Sweep<T>&, T);
 

@@ -153,4 +153,9 @@ inline constexpr Calc kMotionBoundSlack = 0x1p-48;
 /// result is then CastOutcome::IterationLimit with the last time proven free of contact.
 inline constexpr int kCastMaxIterations = 64;
 
+/// Mass properties (mass.hpp): a fan triangle whose doubled area is below this times the sum of its
+/// edge products is summed exactly, since the terms the fast sum drops (2^-106 of those products)
+/// could then pass 2^-66 of its area; above it the fast sum keeps the area within 3 roundings.
+inline constexpr Calc kThinTriangle = 0x1p-40;
+
 }  // namespace collide

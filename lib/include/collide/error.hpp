@@ -17,7 +17,8 @@ namespace collide {
 /// Why a shape was rejected. Every factory documents which of these it can return.
 enum class Error : std::uint8_t {
   NonFinite,          ///< a value is NaN or infinite
-  OutOfRange,         ///< a value's magnitude exceeds max_magnitude<T>() (2^125 for float, 2^500 for double)
+  OutOfRange,         ///< a value's magnitude exceeds max_magnitude<T>() (2^125 for float, 2^500 for double),
+                      ///< or a mass property exceeds T's largest finite value
   NegativeRadius,     ///< circle or capsule radius < 0
   NegativeExtent,     ///< OBB half extent < 0
   MinGreaterThanMax,  ///< AABB min exceeds max on an axis (index() names the axis: 0 = x, 1 = y)
@@ -28,6 +29,8 @@ enum class Error : std::uint8_t {
   NotARectangle,      ///< four corners given to an OBB do not form a rectangle
   EmptyCompound,      ///< a compound with no children
   ZeroRotation,       ///< a transform's rotation given as the zero vector
+  NegativeDensity,    ///< mass_properties() given a density < 0
+  CompoundOuter,      ///< contains(outer, inner) given a compound outer: containment in a union is not decided
 };
 
 /// Stable name of an error, e.g. "NonConvex".
@@ -57,6 +60,10 @@ constexpr std::string_view name(Error e) noexcept {
       return "EmptyCompound";
     case Error::ZeroRotation:
       return "ZeroRotation";
+    case Error::NegativeDensity:
+      return "NegativeDensity";
+    case Error::CompoundOuter:
+      return "CompoundOuter";
   }
   return "Unknown";
 }

@@ -36,11 +36,10 @@ inline Term two_product(double a, double b) noexcept {
   return {p, std::fma(a, b, -p)};
 }
 
-/// Sign of a sum of exact products, by Shewchuk's grow-expansion: the components stay
-/// non-overlapping and sorted by magnitude, so the last non-zero one carries the sign.
+/// Shewchuk's grow-expansion: the exact sum of the terms as non-overlapping components in e,
+/// sorted by magnitude, zeros dropped; returns how many.
 template <std::size_t N>
-int exact_sign_of_sum(const double (&terms)[N]) noexcept {
-  double e[2 * N + 1];
+int grow_expansion(const double (&terms)[N], double (&e)[2 * N + 1]) noexcept {
   int n = 0;
   for (double t : terms) {
     double q = t;
@@ -53,8 +52,27 @@ int exact_sign_of_sum(const double (&terms)[N]) noexcept {
     if (q != 0.0) e[m++] = q;
     n = m;
   }
+  return n;
+}
+
+/// Sign of a sum of exact products: the last non-zero component of its expansion carries it.
+template <std::size_t N>
+int exact_sign_of_sum(const double (&terms)[N]) noexcept {
+  double e[2 * N + 1];
+  const int n = grow_expansion(terms, e);
   if (n == 0) return 0;
   return e[n - 1] > 0.0 ? 1 : -1;
+}
+
+/// A sum of exact terms rounded to double, within 2 units of roundoff of the exact sum: its
+/// expansion's components added from the smallest up (each lies below the next one's last bit).
+template <std::size_t N>
+double rounded_sum(const double (&terms)[N]) noexcept {
+  double e[2 * N + 1];
+  const int n = grow_expansion(terms, e);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) sum += e[i];
+  return sum;
 }
 
 }  // namespace detail

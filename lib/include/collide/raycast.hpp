@@ -20,6 +20,23 @@
 /// So rays passing within delta of the shape (grazing, or ending within delta of it) may hit or
 /// miss; all others are decided as for the exact shape. For AABBs and polygons the t = 0 decision
 /// (origin inside) is exact. Normals are rounded unit vectors.
+///
+/// raycast_exit() answers the other question for a ray that starts inside: where it leaves.
+/// - Origin in the closed shape (the exact contains()): the exit is the largest t in [0, max_t]
+///   such that every ray point with parameter in [0, t] lies in the shape, with the shape's unit
+///   outward normal there. A compound is the union of its children: the exit is where the ray
+///   leaves the union, not where it leaves the child it started in. A ray that is still inside at
+///   max_t (a zero direction included) exits at t = max_t with normal (0, 0).
+/// - Origin outside the shape, or a NaN or infinite ray or max_t, or max_t < 0: nothing. (To pass
+///   through a shape from outside, raycast() to the entry, then raycast_exit() from a point
+///   inside.)
+///
+/// Error contract of raycast_exit() (delta = raycast_exit_tolerance(shape, ray), the same formula
+/// as raycast_tolerance()): t is in [0, max_t]; |origin + t * direction - point| obeys raycast()'s
+/// bound; no ray point with parameter in [0, t] is farther than delta outside the shape (a gap
+/// in a compound narrower than 2 delta may be crossed); for normal != (0, 0) the point is not
+/// deeper than delta inside the shape, so the reported exit is neither before nor after the exact
+/// one except where the ray runs within delta of the boundary; and the normal is outward there.
 
 #include "collide/compound.hpp"
 #include "collide/detail/contains_point.hpp"
@@ -315,6 +332,239 @@ std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) 
 template <AnyShape S>
 std::optional<RayHit<scalar_of_t<S>>> raycast(const S& shape, const Ray<scalar_of_t<S>>& ray, scalar_of_t<S> max_t) {
   return detail::raycast_as<scalar_of_t<S>>(shape, ray, max_t);
+}
+
+namespace detail {
+
+/// The stretch of the ray's line inside one convex piece, as distances along the unit ray (enter
+/// may be negative), and the unit outward normal where the line leaves the piece.
+struct LineSpan {
+  Calc enter;
+  Calc exit;
+  Vec2c exit_normal;
+  int face = -1;  ///< the half-plane left (half_planes_span), -1 otherwise
+};
+
+/// The line against a disk (centre c, radius r >= 0); the exit is computed from the perpendicular
+/// offset h, as in ray_disk(), so that a chord near the rim loses no precision.
+inline std::optional<LineSpan> disk_span(const Vec2c& c, Calc r, const UnitRay& ray) noexcept {
+  const Vec2c m = ray.o - c;
+  const Calc b = m.dot(ray.u);
+  const Vec2c h = m - ray.u * b;
+  const Calc h2 = h.squaredNorm(), r2 = r * r;
+  if (h2 > r2) return std::nullopt;
+  const Calc root = std::sqrt(r2 - h2);
+  const Vec2c n = h + ray.u * root;  // the exit point, from the centre
+  return LineSpan{-b - root, root - b, n != Vec2c::Zero() ? unit_of(n) : Vec2c(ray.u)};
+}
+
+/// The line against half-planes n_i . x <= n_i . p_i (outward normals, any length), as in
+/// ray_half_planes(): the exit is the nearest face the line leaves through.
+template <class Plane>
+std::optional<LineSpan> half_planes_span(std::size_t count, Plane&& plane, const UnitRay& ray) {
+  Calc enter = -std::numeric_limits<Calc>::infinity(), exit = std::numeric_limits<Calc>::infinity();
+  Vec2c exit_n = ray.u;
+  int exit_face = -1;
+  for (std::size_t i = 0; i < count; ++i) {
+    Vec2c n, p;
+    plane(i, n, p);
+    const Calc num = n.dot(ray.o - p);
+    const Calc den = n.dot(ray.u);
+    if (den == 0) {
+      if (num > 0) return std::nullopt;  // parallel, outside this face
+      continue;
+    }
+    const Calc s = -num / den;
+    if (den < 0) {
+      enter = std::max(enter, s);
+    } else if (s < exit) {
+      exit = s;
+      exit_n = n;
+      exit_face = int(i);
+    }
+  }
+  if (!(enter <= exit) || !std::isfinite(exit)) return std::nullopt;
+  return LineSpan{enter, exit, exit_n != Vec2c::Zero() ? unit_of(exit_n) : Vec2c(ray.u), exit_face};
+}
+
+/// The line against a closed segment [a, b] (zero thickness): along it (parallel within the
+/// direction's rounding, and on its line within the pad), the stretch between its ends; across
+/// it, the one crossing point, left through the side the ray heads to.
+inline std::optional<LineSpan> segment_span(const Vec2c& a, const Vec2c& b, const UnitRay& ray) noexcept {
+  const Vec2c w = b - a, ao = a - ray.o;
+  const Calc den = cross(ray.u, w);
+  const Calc wl = w.cwiseAbs().sum();
+  if (std::fabs(den) <= 8 * kUnitRoundoff * wl) {
+    if (std::fabs(cross(ao, ray.u)) > ray.pad) return std::nullopt;
+    const Calc sa = ao.dot(ray.u), sb = (b - ray.o).dot(ray.u);
+    const Vec2c along = sb >= sa ? unit_of(w) : unit_of(Vec2c(-w));
+    return LineSpan{std::min(sa, sb), std::max(sa, sb), along};
+  }
+  const Calc s = cross(ao, w) / den;
+  const Calc v = cross(ao, ray.u) / den;
+  if (v < 0 || v > 1) return std::nullopt;
+  Vec2c n = perp(w);
+  if (n.dot(ray.u) < 0) n = -n;
+  return LineSpan{s, s, unit_of(n)};
+}
+
+/// The wider of two spans of pieces of one convex shape (their union is the shape's span); on a
+/// tie of exits the first keeps its normal.
+inline std::optional<LineSpan> span_union(std::optional<LineSpan> a, const std::optional<LineSpan>& b) noexcept {
+  if (!a) return b;
+  if (!b) return a;
+  a->enter = std::min(a->enter, b->enter);
+  if (b->exit > a->exit) {
+    a->exit = b->exit;
+    a->exit_normal = b->exit_normal;
+    a->face = b->face;
+  }
+  return a;
+}
+
+/// The line against a dilated core (point + r, segment + r, or convex polygon + 0).
+inline std::optional<LineSpan> core_span(const Core& c, const UnitRay& ray) {
+  if (c.size() == 1) return disk_span(c[0], c.radius, ray);
+  if (c.size() == 2) {
+    if (!(c.radius > 0)) return segment_span(c[0], c[1], ray);
+    // Capsule: its span is the union of its end disks' and its rectangle's (each a convex piece
+    // of it). A rectangle left through an end face was left on that end's disk (its normal).
+    std::optional<LineSpan> best = span_union(disk_span(c[0], c.radius, ray), disk_span(c[1], c.radius, ray));
+    const Vec2c t = unit_of(Vec2c(c[1] - c[0])), n = perp(t);
+    const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
+      nn = i == 0 ? n : i == 1 ? Vec2c(-n) : i == 2 ? t : Vec2c(-t);
+      p = i == 0 ? Vec2c(c[0] + n * c.radius) : i == 1 ? Vec2c(c[0] - n * c.radius) : i == 2 ? c[1] : c[0];
+    };
+    std::optional<LineSpan> rect = half_planes_span(4, plane, ray);
+    if (rect && rect->face >= 2) {
+      const Vec2c m = ray.o + ray.u * rect->exit - (rect->face == 2 ? c[1] : c[0]);
+      if (m != Vec2c::Zero()) rect->exit_normal = unit_of(m);
+    }
+    return span_union(best, rect);
+  }
+  const std::size_t n = c.size();
+  const auto plane = [&](std::size_t i, Vec2c& nn, Vec2c& p) {
+    const Vec2c e = c[next_index(i, n)] - c[i];
+    nn = Vec2c(e.y(), -e.x());
+    p = c[i];
+  };
+  return half_planes_span(n, plane, ray);
+}
+
+/// One primitive's span along the ray, cut to its bounding box's span within [0, s_max] (nothing
+/// when the ray misses the box), its exit +infinity when the ray ends inside it: the cast starts
+/// at the box entry, so products stay at the shape's scale, and tiny shapes are rescaled exactly,
+/// as in ray_primitive().
+template <PrimitiveShape P>
+std::optional<LineSpan> primitive_span(const P& shape, const UnitRay& ray) {
+  const Aabb<scalar_of_t<P>> box = bounds(shape);
+  const std::optional<Span> span = ray_box_span(widen(box.min()), widen(box.max()), ray);
+  if (!span) return std::nullopt;
+  const Calc entry = span->enter;
+  UnitRay local = ray;
+  local.o = ray.o + ray.u * entry;
+  local.s_max = span->exit - entry;
+  const Core core = core_of(shape);
+  Core origin;
+  origin.push(local.o);
+  std::optional<LineSpan> h;
+  if (const int k = tiny_scale(core, origin); k != 0) {
+    UnitRay scaled_ray = local;
+    scaled_ray.o = Vec2c(std::ldexp(local.o.x(), k), std::ldexp(local.o.y(), k));
+    scaled_ray.s_max = std::ldexp(local.s_max, k);
+    scaled_ray.pad = std::ldexp(local.pad, k);
+    h = core_span(scaled(core, k), scaled_ray);
+    if (h) {
+      h->enter = std::ldexp(h->enter, -k);
+      h->exit = std::ldexp(h->exit, -k);
+    }
+  } else {
+    h = core_span(core, local);
+  }
+  if (!h) return std::nullopt;
+  h->enter += entry;
+  if (span->exit == ray.s_max && !(h->exit < local.s_max)) {
+    h->exit = std::numeric_limits<Calc>::infinity();  // still inside where the ray ends
+  } else {
+    h->exit = std::min(h->exit, local.s_max) + entry;  // the box ends any rounded sliver
+  }
+  return h;
+}
+
+/// Where a ray starting in the shape leaves it: the end of the chain of spans that starts at 0,
+/// each span joining it when it begins no later than `join` past the chain's end (children that
+/// touch or overlap along the ray). For a primitive this is its one span. Each pass recomputes
+/// the children's spans rather than keeping them, so that the query does not allocate.
+template <class S>
+LineSpan exit_concrete(const S& shape, const UnitRay& ray, Calc join) {
+  // Seeded by the spans holding the origin, even one left right there (an origin on the
+  // boundary heading out leaves at 0 through that span's face).
+  LineSpan out{0, -std::numeric_limits<Calc>::infinity(), ray.u};
+  for (bool grew = true; grew;) {
+    grew = false;
+    for_each_primitive(shape, [&](const auto& x) {
+      const std::optional<LineSpan> h = primitive_span(x, ray);
+      if (h && h->enter <= std::max(out.exit, Calc(0)) + join && h->exit >= -join && h->exit > out.exit) {
+        out.exit = h->exit;
+        out.exit_normal = h->exit_normal;
+        grew = true;
+      }
+    });
+  }
+  return out;
+}
+
+/// raycast_exit() with its result in T, for a stored shape.
+template <Scalar T, class S>
+std::optional<RayHit<T>> raycast_exit_as(const S& shape, const Ray<T>& ray, T max_t) {
+  const Vec2c o = widen(ray.origin), d = widen(ray.direction);
+  const Calc tmax = max_t;
+  if (!o.allFinite() || !d.allFinite() || !std::isfinite(tmax) || tmax < 0) return std::nullopt;
+  if (!visit_shape(shape, [&](const auto& x) { return contains_concrete(x, o); })) return std::nullopt;
+  const auto stays = [&] { return RayHit<T>{max_t, Vec2<T>((o + d * tmax).template cast<T>()), Vec2<T>::Zero()}; };
+  const Calc dm = d.cwiseAbs().maxCoeff();
+  if (dm == 0) return stays();
+  // The unit direction and |d| as in raycast_as(): scaled by a power of two first (exact).
+  int e = 0;
+  static_cast<void>(std::frexp(dm, &e));
+  const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+  const Calc len_s = ds.norm();
+  const Vec2c u = ds / len_s;
+  UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
+  const Calc m = std::max(scale_of(calc_bounds(shape)), o.cwiseAbs().maxCoeff());
+  r.pad = 4 * kUnitRoundoff * m + 16 * kSmallestDouble;
+  // Children that touch along the ray join across their spans' rounding (a few pads), well
+  // within the bound.
+  const LineSpan h = visit_shape(shape, [&](const auto& x) { return exit_concrete(x, r, 4 * r.pad); });
+  if (!(h.exit < r.s_max)) return stays();
+  const Calc s = std::max(Calc(0), h.exit);
+  const Calc t = e > 0 ? std::ldexp(s, -e) / len_s : std::ldexp(s / len_s, -e);
+  if (!(t < tmax)) return stays();
+  // t rounded toward 0: the ray up to it stays in the shape.
+  T rounded = static_cast<T>(t);
+  if (Calc(rounded) > t) rounded = std::nextafter(rounded, T(0));
+  const Vec2c point = o + u * s;
+  return RayHit<T>{rounded, point.template cast<T>(), h.exit_normal.template cast<T>()};
+}
+
+}  // namespace detail
+
+/// The error bound delta of raycast_exit() (see the contract at the top of this file): the same
+/// formula as raycast_tolerance().
+template <AnyShape S>
+Calc raycast_exit_tolerance(const S& shape, const Ray<scalar_of_t<S>>& ray) {
+  return raycast_tolerance(shape, ray);
+}
+
+/// Where a ray starting in the closed shape leaves it: the largest t in [0, max_t] with the whole
+/// ray up to t in the shape, the point there and the unit outward normal; t = max_t with normal
+/// (0, 0) when the ray is still inside at max_t. A compound is left where the ray leaves the union
+/// of its children. Nothing for an origin outside the shape, and for NaN or infinite values or
+/// max_t < 0. Error: see raycast_exit_tolerance() and the contract at the top of raycast.hpp.
+template <AnyShape S>
+std::optional<RayHit<scalar_of_t<S>>> raycast_exit(const S& shape, const Ray<scalar_of_t<S>>& ray,
+                                                   scalar_of_t<S> max_t) {
+  return detail::raycast_exit_as<scalar_of_t<S>>(shape, ray, max_t);
 }
 
 }  // namespace collide

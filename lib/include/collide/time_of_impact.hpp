@@ -44,7 +44,8 @@
 /// over every face normal of both posed cores (the kept local normals turned by the pose) and
 /// the closest points' direction. Every point of a body moves at most V per
 /// unit of time relative to the other, so from a gap g the bodies cannot meet before
-/// (g - target) / V: the step when rounding leaves no axis separating by more than target. A
+/// (g - target) / V: the least step (it always moves s), for when rounding leaves no axis
+/// separating by much more than target. A
 /// pair of bodies neither of which turns (a1 == a0) only translates: it is cast as shape_cast()
 /// casts it, from the poses at s = 0 (two polygons in one step, a grazing corner through its
 /// disc), its cores dilated by how far the poses' rounding strays from that translation. A
@@ -469,12 +470,14 @@ CoreCast advance_swept(const Core& pl, const KeptFaces& fp, const Sweep<T>& sp, 
     // The closest points' direction (when not the widest face's normal, already bounded).
     const Vec2c n = unit_of(cl.on_q - cl.on_p);
     if (!on_face && n != Vec2c::Zero()) ds = std::max(ds, safe_along(n));
-    if (!(ds > 0)) ds = (gap - target) / speed;
-    if (!(ds > 0)) return hit();
+    // Never less than the gap over the bound on all motion. It moves s: gap > 2 target here, and
+    // speed <= 2.9 M (the travel of each centre is at most twice its position's magnitude, each
+    // turn times reach at most its share of M), so it exceeds 2^-53, beyond half an ulp of s <= 1;
+    // +inf when nothing moves.
+    const Calc by_gap = (gap - target) / speed;
+    if (!(ds > by_gap)) ds = by_gap;
     if (s + ds > s_max) return CoreCast{CastOutcome::Miss, s_max, Vec2c::Zero(), Vec2c::Zero(), step + 1};
-    const Calc next = s + ds;
-    if (!(next > s)) return hit();
-    s = next;
+    s += ds;
   }
   return CoreCast{CastOutcome::IterationLimit, s, Vec2c::Zero(), Vec2c::Zero(), kCastMaxIterations};
 }

@@ -19,6 +19,9 @@
 /// - Tiny shapes (every value below 2^-400) have their rounded outputs computed on exactly
 ///   rescaled cores, so those are relative-accurate; the 2^-500 floor is a bound.
 /// - contains() is exact for every kind (contains.hpp); raycast() states its bound in raycast.hpp.
+/// - signed_distance(s, p) (distance.hpp) has the sign of contains(s, p) and is within
+///   signed_distance_tolerance(s, p) of the exact signed distance; closest_points(a, b) has
+///   distance()'s distance and its points within closest_points_tolerance(a, b) of their shapes.
 /// - Shapes placed by transforms (transformed.hpp, every query with a Transform per shape): the
 ///   exact shape is the exact image of the stored values; the identity computes nothing and
 ///   gives these answers. Otherwise the image is rounded in double within transform_tolerance(s,
@@ -34,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace collide {
 
@@ -44,6 +48,21 @@ template <class S>
 Aabb<Calc> calc_bounds(const S& s) {
   const auto b = bounds(s);
   return ShapeAccess::aabb<Calc>(widen(b.min()), widen(b.max()));
+}
+
+/// signed_distance_tolerance() without the placement term, for a shape with this bounding box.
+template <Scalar T>
+Calc point_distance_tolerance(const Aabb<T>& box, const Vec2<T>& p) {
+  const Calc m = std::max(scale_of(box), widen(p).cwiseAbs().maxCoeff());
+  return (kOverlapErrorFactor * kUnitRoundoff + 4 * Calc(std::numeric_limits<T>::epsilon())) * m + kAbsoluteFloor +
+         Calc(std::numeric_limits<T>::denorm_min());
+}
+
+/// closest_points_tolerance() for the error unit `unit` of a pair whose boxes reach magnitude s:
+/// 4 units (distance()'s bound) plus the rounding of two points to T.
+template <Scalar T>
+Calc witness_tolerance(Calc unit, Calc s) {
+  return 4 * unit + 2 * Calc(std::numeric_limits<T>::epsilon()) * s + 2 * Calc(std::numeric_limits<T>::denorm_min());
 }
 
 }  // namespace detail
@@ -70,6 +89,24 @@ template <AnyShape A, AnyShape B>
 Calc rounding_tolerance(const A& a, const B& b) {
   const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
   return kOverlapErrorFactor * kUnitRoundoff * s + kAbsoluteFloor + placement_tolerance(a) + placement_tolerance(b);
+}
+
+/// The error bound of closest_points(a, b): each witness point lies within it of its shape, and
+/// the distance between the two points within it of the distance returned. 4 rounding_tolerance(a,
+/// b) + 2 eps_T S + 2 denorm_min_T (S as in rounding_tolerance(): the points' rounding to T).
+template <AnyShape A, AnyShape B>
+Calc closest_points_tolerance(const A& a, const B& b) {
+  const Calc s = std::max(detail::scale_of(bounds(a)), detail::scale_of(bounds(b)));
+  return detail::witness_tolerance<scalar_of_t<A>>(rounding_tolerance(a, b), s);
+}
+
+/// The error bound of signed_distance(s, p): (64 * 2^-53 + 4 eps_T) * max(S, |p|_inf) + 2^-500 +
+/// denorm_min_T, S the largest absolute coordinate of bounds(s), plus placement_tolerance(s) for a
+/// compound with child transforms. The answer is within it of the exact signed distance (for a
+/// finite p whose distance T can hold).
+template <AnyShape S>
+Calc signed_distance_tolerance(const S& s, const Vec2<scalar_of_t<S>>& p) {
+  return detail::point_distance_tolerance(bounds(s), p) + placement_tolerance(s);
 }
 
 /// The error bound of overlaps() for this pair: the width of the band of exact signed distance

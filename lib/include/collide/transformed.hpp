@@ -1,8 +1,9 @@
 #pragma once
 /// @file transformed.hpp
 /// Every query on shapes stored in local frames and placed by transforms: overlaps, contact,
-/// resolve, distance, raycast, contains and bounds, for every kind (compounds included), both
-/// scalars and either argument order. The world-space queries are these with the identity.
+/// resolve, distance, closest points, signed distance, raycast, contains and bounds, for every kind
+/// (compounds included), both scalars and either argument order. The world-space queries are these
+/// with the identity.
 ///
 /// Meaning: a shape s with transform x is the exact image of its stored values under x
 /// (transform.hpp). Queries compute that image in double (detail/image.hpp) — a compound is never
@@ -229,6 +230,47 @@ requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> scalar_of_t<A> distance(
   if (xa.is_identity() && xb.is_identity()) return distance(a, b);
   return detail::with_placed_pair(a, xa, b, xb,
                                   [](const auto& pa, const auto& pb) { return detail::distance_as<T>(pa, pb); });
+}
+
+/// The error bound of closest_points(a, xa, b, xb): closest_points_tolerance()'s formula with
+/// rounding_tolerance(a, xa, b, xb) as its unit and S from the placed boxes.
+template <AnyShape A, AnyShape B>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> Calc closest_points_tolerance(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+  const Calc s = std::max(detail::scale_of(bounds(a, xa)), detail::scale_of(bounds(b, xb)));
+  return detail::witness_tolerance<scalar_of_t<A>>(rounding_tolerance(a, xa, b, xb), s);
+}
+
+/// closest_points() of the placed shapes, in world space: the distance is distance(a, xa, b, xb)
+/// bit for bit, and the points are as closest_points(a, b) gives them for the computed images.
+/// Error: closest_points_tolerance(a, xa, b, xb) against the exact images.
+template <AnyShape A, AnyShape B>
+requires std::is_same_v<scalar_of_t<A>, scalar_of_t<B>> ClosestPoints<scalar_of_t<A>> closest_points(
+    const A& a, const Transform<scalar_of_t<A>>& xa, const B& b, const Transform<scalar_of_t<A>>& xb) {
+  using T = scalar_of_t<A>;
+  if (xa.is_identity() && xb.is_identity()) return closest_points(a, b);
+  return detail::with_placed_pair(a, xa, b, xb,
+                                  [](const auto& pa, const auto& pb) { return detail::closest_as<T>(pa, pb); });
+}
+
+/// signed_distance_tolerance() for s placed by x: its formula on bounds(s, x), plus
+/// transform_tolerance(s, x).
+template <AnyShape S>
+Calc signed_distance_tolerance(const S& s, const Transform<scalar_of_t<S>>& x, const Vec2<scalar_of_t<S>>& p) {
+  if (x.is_identity()) return signed_distance_tolerance(s, p);
+  return detail::point_distance_tolerance(bounds(s, x), p) + transform_tolerance(s, x);
+}
+
+/// signed_distance() for s placed by x: on the computed image, so that its sign is contains(s, x,
+/// p)'s exactly. Error: signed_distance_tolerance(s, x, p) against the exact image.
+template <AnyShape S>
+scalar_of_t<S> signed_distance(const S& s, const Transform<scalar_of_t<S>>& x, const Vec2<scalar_of_t<S>>& p) {
+  using T = scalar_of_t<S>;
+  if (x.is_identity()) return signed_distance(s, p);
+  const Vec2c v = widen(p);
+  return detail::visit_shape(s, [&](const auto& c) {
+    return detail::with_placed(c, x, [&](const auto& img) { return detail::signed_distance_as<T>(img, v); });
+  });
 }
 
 /// contains() for s placed by x: exact for the computed image, so exact for the exact image

@@ -15,15 +15,20 @@
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/FPU.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
 #include <CGAL/Gmpzf.h>
 #include <CGAL/Interval_nt.h>
 #include <boost/container/small_vector.hpp>
+#include <gmp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace collide::oracle {
 
@@ -767,6 +772,35 @@ bool prim_inside_box(const CoreInput& s, const Aabb<double>& box) {
   return true;
 }
 
+/// The primitive `outer` (a convex core C dilated by R) holds the primitive `inner` (core Q
+/// dilated by r): the convex hull of the discs (q, r), q a vertex of Q, lies in the convex outer
+/// exactly when each disc does. A disc lies in it when its centre's signed distance to C (minus
+/// the depth inside a polygon core) is at most R - r: outside C, dist(q, C)^2 <= (R - r)^2 with
+/// R >= r; inside a polygon core, depth(q, C) >= r - R, each edge line's distance compared
+/// squared.
+bool prim_holds(const CoreInput& outer, const CoreInput& inner) {
+  Upward upward;
+  const DualCore co(outer), ci(inner);
+  const double big = outer.radius, r = inner.radius;
+  auto room = [&](auto tag) {  // R - r
+    using NT = decltype(tag);
+    return NT(NT(big) - NT(r));
+  };
+  auto need = [&](auto tag) {  // r - R
+    using NT = decltype(tag);
+    return NT(NT(r) - NT(big));
+  };
+  for (std::size_t j = 0; j < ci.size(); ++j) {
+    const Vx q{&ci, j};
+    if (co.size() >= 3 && point_in(q, co)) {
+      if (fsign(need) > 0 && sign_boundary_minus(q, co, need) < 0) return false;
+      continue;
+    }
+    if (fsign(room) < 0 || sign_point_features(q, co, squared(room)) > 0) return false;
+  }
+  return true;
+}
+
 /// Exact squared distance between the cores (0 when they meet).
 Rational core_dist2(const Core<Rational>& p, const Core<Rational>& q, bool meet) {
   if (meet) return Rational(0);
@@ -824,6 +858,178 @@ bool any_pair(const Parts& a, const Parts& b, F&& f) {
     }
   }
   return false;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mass properties (mass.hpp's definition), exactly: areas and moments of polygons are rationals
+// of the stored values; pi and a capsule's length |b - a| are not, so every quantity is a
+// bracket [lo, hi] of rationals around the exact value, a point when it is rational.
+
+using Qr = CGAL::Gmpq;
+
+struct Bracket {
+  Qr lo, hi;
+};
+Bracket point_bracket(const Qr& x) {
+  return {x, x};
+}
+Bracket operator+(const Bracket& a, const Bracket& b) {
+  return {a.lo + b.lo, a.hi + b.hi};
+}
+Bracket operator-(const Bracket& a, const Bracket& b) {
+  return {a.lo - b.hi, a.hi - b.lo};
+}
+Bracket operator*(const Bracket& a, const Bracket& b) {
+  const Qr p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+}
+/// a / b for b > 0 (b.lo > 0).
+Bracket operator/(const Bracket& a, const Bracket& b) {
+  const Qr p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+  return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+}
+bool is_zero(const Bracket& a) {
+  return CGAL::is_zero(a.lo) && CGAL::is_zero(a.hi);
+}
+
+/// pi between two rationals 10^-36 apart.
+Bracket pi_bracket() {
+  const CGAL::Gmpz scale("1000000000000000000000000000000000000");
+  const CGAL::Gmpz digits("3141592653589793238462643383279502884");
+  return {Qr(digits, scale), Qr(digits + 1, scale)};
+}
+
+/// sqrt(x) for a rational x >= 0, between two rationals within 2^-119 of it relatively:
+/// sqrt(n / d) = sqrt(n d 4^k) / (d 2^k), the integer square root taken low and high.
+Bracket sqrt_bracket(const Qr& x) {
+  if (CGAL::is_zero(x)) return point_bracket(x);
+  const CGAL::Gmpz nd = x.numerator() * x.denominator();
+  const long bits = long(nd.bit_size());
+  const unsigned long k = bits < 240 ? static_cast<unsigned long>((241 - bits) / 2) : 0ul;
+  CGAL::Gmpz wide, root, den;
+  mpz_mul_2exp(wide.mpz(), nd.mpz(), 2 * k);
+  mpz_sqrt(root.mpz(), wide.mpz());
+  mpz_mul_2exp(den.mpz(), x.denominator().mpz(), k);
+  return {Qr(root, den), Qr(root + 1, den)};
+}
+
+/// A shape's exact mass properties at unit density: area, centroid, inertia about the centroid.
+struct ExactMass {
+  Bracket area;
+  Bracket cx, cy;
+  Bracket inertia;
+};
+
+/// One primitive, in its own frame: a polygon core (radius 0) by its shoelace sums, a point core
+/// as a disk, a segment core as a capsule (a rectangle and a disk split at its ends).
+ExactMass primitive_mass(const CoreInput& in) {
+  const Core<Qr> c = realize_local<Qr>(in, nullptr);
+  const Bracket r = point_bracket(c.radius), pi = pi_bracket();
+  if (c.v.size() >= 3) {
+    if (!CGAL::is_zero(c.radius)) throw Unsupported("oracle: mass of a rounded polygon is not defined");
+    Qr a2(0), mx(0), my(0), j(0);
+    for (std::size_t i = 0; i < c.v.size(); ++i) {
+      const P<Qr>&p = c.v[i], &q = c.at(i + 1);
+      const Qr w = cross(p, q);
+      a2 += w;
+      mx += w * (p.x + q.x);
+      my += w * (p.y + q.y);
+      j += w * (p.x * p.x + p.x * q.x + q.x * q.x + p.y * p.y + p.y * q.y + q.y * q.y);
+    }
+    // Centroid sum / (3 a2); polar moment about the origin j / 12, moved to the centroid.
+    const Qr cx = mx / (3 * a2), cy = my / (3 * a2);
+    const Qr area = a2 / 2;
+    return {point_bracket(area), point_bracket(cx), point_bracket(cy),
+            point_bracket(j / 12 - area * (cx * cx + cy * cy))};
+  }
+  if (c.v.size() == 1) {
+    const Bracket r2 = r * r;
+    return {pi * r2, point_bracket(c.v[0].x), point_bracket(c.v[0].y), pi * r2 * r2 / point_bracket(Qr(2))};
+  }
+  const P<Qr> d = sub(c.v[1], c.v[0]);
+  const Bracket l2 = point_bracket(dot(d, d)), l = sqrt_bracket(l2.lo);
+  const Bracket two = point_bracket(Qr(2)), four = point_bracket(Qr(4)), six = point_bracket(Qr(6));
+  const Bracket area = two * r * l + pi * r * r;
+  const Bracket inertia = pi * (r * r * r * r / two + r * r * l2 / four) + two * r * r * r * l + r * l2 * l / six;
+  return {area, point_bracket((c.v[0].x + c.v[1].x) / 2), point_bracket((c.v[0].y + c.v[1].y) / 2), inertia};
+}
+
+/// x's exact image of a point: R(q) c + p with q as stored.
+void place_point(const Vec2d& p, const Vec2d& q, Bracket& x, Bracket& y) {
+  const Bracket px = point_bracket(Qr(p.x())), py = point_bracket(Qr(p.y()));
+  const Bracket qx = point_bracket(Qr(q.x())), qy = point_bracket(Qr(q.y()));
+  const Bracket nx = qx * x - qy * y + px, ny = qy * x + qx * y + py;
+  x = nx;
+  y = ny;
+}
+
+/// A compound's exact mass properties in its frame: its children's summed, each centroid placed
+/// by its child transform (parallel axes for the inertia); children all without area: the mean
+/// of their centroids.
+ExactMass compound_mass(const Compound<double>& c) {
+  std::vector<ExactMass> kids;
+  bool any_area = false;
+  for (std::size_t i = 0; i < c.children().size(); ++i) {
+    ExactMass m = primitive_mass(core_input_of(c.children()[i]));
+    const Transform<double> t = c.child_transform(i);
+    if (!t.is_identity()) {
+      require_pose(t.position(), t.rotation());
+      place_point(t.position(), t.rotation(), m.cx, m.cy);
+    }
+    any_area = any_area || !is_zero(m.area);
+    kids.push_back(std::move(m));
+  }
+  const Bracket zero = point_bracket(Qr(0));
+  ExactMass out{zero, zero, zero, zero};
+  if (!any_area) {
+    const Bracket count = point_bracket(Qr(static_cast<long>(kids.size())));
+    for (const ExactMass& k : kids) {
+      out.cx = out.cx + k.cx;
+      out.cy = out.cy + k.cy;
+    }
+    out.cx = out.cx / count;
+    out.cy = out.cy / count;
+    return out;
+  }
+  Bracket mx = zero, my = zero;
+  for (const ExactMass& k : kids) {
+    out.area = out.area + k.area;
+    mx = mx + k.area * k.cx;
+    my = my + k.area * k.cy;
+  }
+  out.cx = mx / out.area;
+  out.cy = my / out.area;
+  for (const ExactMass& k : kids) {
+    const Bracket dx = k.cx - out.cx, dy = k.cy - out.cy;
+    out.inertia = out.inertia + k.inertia + k.area * (dx * dx + dy * dy);
+  }
+  return out;
+}
+
+/// A shape's exact mass properties in its frame.
+ExactMass shape_mass(const Shape<double>& s) {
+  return std::visit(
+      [](const auto& x) -> ExactMass {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Compound<double>>) {
+          return compound_mass(x);
+        } else {
+          return primitive_mass(core_input_of(x));
+        }
+      },
+      s);
+}
+
+/// The five outputs of mass_properties() for s at this density: mass, centroid x and y (placed by
+/// s's transform), inertia about the centroid, inertia about the origin.
+std::array<Bracket, 5> mass_outputs(const Placed& s, double density) {
+  require_finite(density, "density");
+  require_pose(s.position, s.rotation);
+  const ExactMass m = shape_mass(s.shape);
+  const Bracket rho = point_bracket(Qr(density));
+  Bracket cx = m.cx, cy = m.cy;
+  place_point(s.position, s.rotation, cx, cy);
+  const Bracket mass = rho * m.area, inertia = rho * m.inertia;
+  return {mass, cx, cy, inertia, inertia + mass * (cx * cx + cy * cy)};
 }
 
 }  // namespace
@@ -895,6 +1101,15 @@ bool inside_box(const Placed& s, const Aabb<double>& box) {
   return true;
 }
 
+bool contains_shape(const Placed& outer, const Placed& inner) {
+  const Parts po = parts_of(outer), pi = parts_of(inner);
+  if (po.compound) throw Unsupported("oracle: containment in a compound of several children is not defined");
+  for (const CoreInput& x : pi.items) {
+    if (!prim_holds(po.items[0], x)) return false;
+  }
+  return true;
+}
+
 int compare_boundary_distance(const Placed& s, const Vec2<double>& p, double d) {
   require_finite(p, "point");
   require_finite(d, "distance");
@@ -943,6 +1158,26 @@ double approx_signed_distance(const Placed& a, const Placed& b) {
     return hit;
   });
   return hit ? -0.0 : gap;
+}
+
+std::array<bool, kMassOutputs> mass_within(const Placed& s, double density, const MassValues& values,
+                                           const MassValues& bounds) {
+  const std::array<Bracket, 5> exact = mass_outputs(s, density);
+  std::array<bool, kMassOutputs> out{};
+  for (std::size_t k = 0; k < kMassOutputs; ++k) {
+    require_finite(values[k], "mass property");
+    require_finite(bounds[k], "mass property bound");
+    const Qr v(values[k]), b(bounds[k]);
+    out[k] = v - b <= exact[k].lo && exact[k].hi <= v + b;
+  }
+  return out;
+}
+
+MassValues approx_mass(const Placed& s, double density) {
+  const std::array<Bracket, 5> exact = mass_outputs(s, density);
+  MassValues out{};
+  for (std::size_t k = 0; k < kMassOutputs; ++k) out[k] = CGAL::to_double((exact[k].lo + exact[k].hi) / 2);
+  return out;
 }
 
 }  // namespace exact

@@ -96,17 +96,18 @@ void write_case(std::ostream& out, const Case& c) {
     write_text(out, "shape b", *c.b);
   }
   if (c.transform_b) write_text(out, "transform b", *c.transform_b);
-  if (law == Law::Translation || law == Law::CastTranslation)
+  if (law == Law::Translation || law == Law::CastTranslation || law == Law::Mass)
     out << "# t = (" << detail::num(c.tx) << ", " << detail::num(c.ty) << ")\ntranslation " << hex(c.tx) << ' '
         << hex(c.ty) << '\n';
   if (law == Law::Rotation) out << "rotation " << c.quarter_turns << " mirror " << (c.mirror ? 1 : 0) << '\n';
-  if (law == Law::Raycast || law == Law::PlacedShape || law == Law::CastRaycast)
+  if (law == Law::Raycast || law == Law::RaycastExit || law == Law::PlacedShape || law == Law::CastRaycast)
     out << "# ray (" << detail::num(c.ox) << ", " << detail::num(c.oy) << ") + t (" << detail::num(c.dx) << ", "
         << detail::num(c.dy) << "), t <= " << detail::num(c.max_t) << "\nray " << hex(c.ox) << ' ' << hex(c.oy) << ' '
         << hex(c.dx) << ' ' << hex(c.dy) << " max_t " << hex(c.max_t) << '\n';
-  if (law == Law::Contains || law == Law::PlacedShape)
+  if (law == Law::Contains || law == Law::SignedDistance || law == Law::PlacedShape)
     out << "# point (" << detail::num(c.px) << ", " << detail::num(c.py) << ")\npoint " << hex(c.px) << ' ' << hex(c.py)
         << '\n';
+  if (law == Law::Mass) out << "# density " << detail::num(c.density) << "\ndensity " << hex(c.density) << '\n';
   if (info(law).suite == LawSuite::Moving && law != Law::CastRaycast && law != Law::Toi)
     out << "# a moves at (" << detail::num(c.vax) << ", " << detail::num(c.vay) << "), b at (" << detail::num(c.vbx)
         << ", " << detail::num(c.vby) << "), t <= " << detail::num(c.max_t) << "\nmotion " << hex(c.vax) << ' '
@@ -213,6 +214,8 @@ Case read_case(std::istream& in) {
       constexpr const char* form = "point X Y";
       c.px = next_value(ls, line, form);
       c.py = next_value(ls, line, form);
+    } else if (key == "density") {
+      c.density = next_value(ls, line, "density X");
     } else if (key == "motion") {
       constexpr const char* form = "motion vax vay vbx vby max_t T";
       for (double* v : {&c.vax, &c.vay, &c.vbx, &c.vby}) *v = next_value(ls, line, form);
@@ -319,7 +322,8 @@ template <Scalar T>
 Verdict replay_as(const Case& c) {
   const Law law = c.law;
   const bool placed = (info(law).suite == LawSuite::Placed && law != Law::TransformRejection) || law == Law::Cast ||
-                      law == Law::CastSymmetry || law == Law::CastTranslation;
+                      law == Law::CastLeaving || law == Law::CastSymmetry || law == Law::CastTranslation ||
+                      law == Law::Mass;
   if (!placed && (c.transform_a || c.transform_b))
     throw CaseError("law '" + std::string(name(law)) + "' takes no transform");
   auto shape_a = [&] { return from_data<T>(c.a); };
@@ -355,6 +359,8 @@ Verdict replay_as(const Case& c) {
       return bounds_law(shape_a());
     case Law::Raycast:
       return raycast_law(shape_a(), ray, narrow<T>(c.max_t));
+    case Law::RaycastExit:
+      return raycast_exit_law(shape_a(), ray, narrow<T>(c.max_t));
     case Law::Hierarchy:
       return hierarchy(shape_a(), shape_b());
     case Law::Representation:
@@ -369,6 +375,12 @@ Verdict replay_as(const Case& c) {
     }
     case Law::Contains:
       return contains_law(shape_a(), point);
+    case Law::ContainsShape:
+      return contains_shape_law(shape_a(), shape_b());
+    case Law::SignedDistance:
+      return signed_distance_law(shape_a(), point);
+    case Law::ClosestPoints:
+      return closest_points_law(shape_a(), shape_b());
     case Law::Touching:
       return touching(shape_a(), shape_b());
     case Law::Scene:
@@ -381,6 +393,9 @@ Verdict replay_as(const Case& c) {
       return manifold_resting(shape_a(), shape_b());
     case Law::Speculative:
       return manifold_speculative(shape_a(), shape_b());
+    case Law::Mass:
+      if (c.transform_b) throw CaseError("law 'mass' places its shape by transform a only");
+      return mass_law(shape_a(), narrow<T>(c.density), move, xa);
     case Law::PlacedAgreement:
       return placed_agreement(shape_a(), xa, shape_b(), xb);
     case Law::PlacedOutputs:
@@ -406,6 +421,8 @@ Verdict replay_as(const Case& c) {
       return placed_speculative(shape_a(), xa, shape_b(), xb);
     case Law::Cast:
       return cast_law(shape_a(), shape_b(), motion);
+    case Law::CastLeaving:
+      return cast_leaving(shape_a(), shape_b(), motion);
     case Law::CastSymmetry:
       return cast_symmetry(shape_a(), shape_b(), motion);
     case Law::CastTranslation:

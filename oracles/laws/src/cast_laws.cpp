@@ -207,6 +207,62 @@ Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
 }
 
 template <Scalar T>
+Verdict cast_leaving(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
+  Verdict v;
+  CastOptions leave;
+  leave.stop_at_overlap = false;
+  const CastResult<T> r = in.xa.is_identity() && in.xb.is_identity()
+                              ? shape_cast(a, in.va, b, in.vb, in.max_t, leave)
+                              : shape_cast(a, in.xa, in.va, b, in.xb, in.vb, in.max_t, leave);
+  const double eps = cast_tolerance(a, in.xa, in.va, b, in.xb, in.vb, in.max_t);
+  const double t = double(r.t), max_t = double(in.max_t);
+  const oracle::Placed ea = oracle::placed(a, in.xa), eb = oracle::placed(b, in.xb);
+  v.relation = oracle::overlaps(ea, eb) ? Relation::Overlapping : Relation::Separated;
+  const auto c = contact(a, in.xa, b, in.xb);
+  const bool leaving = c && !(widen(c->normal).dot(widen(in.va) - widen(in.vb)) > 0);
+  v.account = "shape_cast(" + describe_input(a, b, in) + ", leaving an overlap) = " + describe_result(r) +
+              ", tolerance " + num(eps) +
+              (c ? ", contact normal " + vec(c->normal) + (leaving ? " (leaving)" : " (closing)") : ", no contact");
+  if (r.outcome == CastOutcome::InvalidInput) {
+    fail(v, "a valid answer for valid input", "invalid input");
+    return v;
+  }
+  if (!leaving) {
+    const CastResult<T> d = cast_of(a, b, in);
+    if (r.outcome != d.outcome || r.t != d.t || r.normal != d.normal || r.point != d.point)
+      fail(v, "the default cast's answer, bit for bit (the start is not left): " + describe_result(d),
+           describe_result(r));
+    return v;
+  }
+  if (!(t >= 0 && t <= max_t)) fail(v, "0 <= t <= max_t", num(t));
+  if (!v.ok) return v;
+  const std::vector<oracle::Placed> pa = placed_parts(a, in.xa), pb = placed_parts(b, in.xb);
+  const double until = r.outcome == CastOutcome::Miss ? max_t : t;
+  bool all_overlap = true, near_at_t = false;
+  for (const oracle::Placed& p : pa) {
+    for (const oracle::Placed& q : pb) {
+      const bool overlap = oracle::overlaps(p, q);
+      all_overlap = all_overlap && overlap;
+      // Never later than the first contact of a pair apart at the start.
+      if (!oracle::meets_during(p, in.va, q, in.vb, 0.0, 0.0, eps) && (!r.hit() || t > 0) &&
+          oracle::meets_during(p, in.va, q, in.vb, 0.0, until)) {
+        fail(v, "a pair of primitives apart at the start stays apart on [0, " + num(until) + "]",
+             "the exact pair meets there: tunnelled");
+      }
+      near_at_t = near_at_t || (!overlap && oracle::meets_during(p, in.va, q, in.vb, t, t, eps));
+    }
+  }
+  if (all_overlap && r.outcome != CastOutcome::Miss)
+    fail(v, "a miss (every pair of primitives overlaps at the start and is left out)", describe_result(r));
+  if (r.hit()) {
+    if (!near_at_t) fail(v, "a pair that did not overlap at the start within the tolerance at t", "none");
+    const double len = std::hypot(double(r.normal.x()), double(r.normal.y()));
+    if (!(std::fabs(len - 1) <= 8 * detail::eps<T>())) fail(v, "a unit normal", "|normal| = " + num(len));
+  }
+  return v;
+}
+
+template <Scalar T>
 Verdict cast_symmetry(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in) {
   Verdict v;
   const CastResult<T> r = cast_of(a, b, in);
@@ -412,6 +468,7 @@ Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const 
 
 #define COLLIDE_CAST_LAWS(T)                                                                                   \
   template Verdict cast_law<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                         \
+  template Verdict cast_leaving<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                     \
   template Verdict cast_symmetry<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&);                    \
   template Verdict cast_translation<T>(const Shape<T>&, const Shape<T>&, const CastInput<T>&, const Vec2<T>&); \
   template Verdict cast_raycast<T>(const Shape<T>&, const Ray<T>&, T);                                         \

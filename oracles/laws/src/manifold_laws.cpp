@@ -625,6 +625,9 @@ Verdict speculative_of(const PairIn<T>& in) {
         return;
       }
     }
+    // Each point's surface points lie on the shapes (so the nearest realises the gap) and its
+    // feature ids name features there: a solver warm-starts a speculative contact from them.
+    std::string skipped;
     for (int i = 0; i < c->count; ++i) {
       if (!(c->separations[std::size_t(i)] <= double(spec) + bound)) {
         j.broken("every point apart by at most the speculative distance " + num(spec),
@@ -632,7 +635,13 @@ Verdict speculative_of(const PairIn<T>& in) {
         return;
       }
       if (!check_point_separation(j, in, *c, i)) return;
+      if (!check_point_features(j, in, *c, i, skipped)) return;
     }
+    if (c->count == 2 && c->ids[0] == c->ids[1]) {
+      j.broken("two points with different ids", "both " + ids_text(*c));
+      return;
+    }
+    j.v.account += "; ids " + ids_text(*c) + (skipped.empty() ? "" : "; not rebuilt:" + skipped);
   });
 }
 

@@ -1,5 +1,5 @@
 // The laws on one shape: bounds are conservative; raycasts hit the boundary first, with the
-// outward normal; contains() agrees with the oracle.
+// outward normal; a ray from inside leaves where the shape ends; contains() agrees with the oracle.
 
 #include "support.hpp"
 
@@ -242,8 +242,106 @@ Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
 
 template Verdict bounds_law<float>(const Shape<float>&);
 template Verdict bounds_law<double>(const Shape<double>&);
+template <Scalar T>
+Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
+  Verdict v;
+  auto fail = [&](std::string expected, std::string got) {
+    v.ok = false;
+    v.expected = std::move(expected);
+    v.got = std::move(got);
+    v.account = "expected " + v.expected + "; got " + v.got + "; s = " + describe(s) + "; ray " + vec(ray.origin) +
+                " + t " + vec(ray.direction) + ", max_t " + num(max_t);
+  };
+  try {
+    const Vec2c o = ray.origin.template cast<double>(), d = ray.direction.template cast<double>();
+    const double len = d.norm();
+    const double bound = raycast_exit_tolerance(s, ray);
+    const auto exit = raycast_exit(s, ray, max_t);
+    const bool valid = o.allFinite() && d.allFinite() && std::isfinite(double(max_t)) && max_t >= 0;
+    const bool inside = valid && contains(s, ray.origin);
+    v.relation = inside ? Relation::Contained : Relation::Separated;
+    if (!inside) {
+      v.account = "origin outside or bad input";
+      if (exit) fail("nothing (origin outside the shape, or bad input)", "exit t " + num(exit->t));
+      return v;
+    }
+    if (!exit) {
+      fail("an exit for an origin inside the shape", "nothing");
+      return v;
+    }
+    const double t = exit->t;
+    const Vec2c p = exit->point.template cast<double>();
+    const Vec2c n = exit->normal.template cast<double>();
+    v.account = "exit t " + num(t) + " at " + vec(exit->point) + " normal " + vec(exit->normal);
+    if (!(t >= 0) || !(t <= double(max_t))) {
+      fail("0 <= t <= max_t", "t " + num(t));
+      return v;
+    }
+    if ((p - (o + d * t)).norm() >
+        bound + (4 * detail::eps<T>() * t + double(std::numeric_limits<T>::denorm_min())) * len) {
+      fail("point = origin + t * direction", "point " + vec(exit->point));
+      return v;
+    }
+    const bool stays = n == Vec2c::Zero();
+    if (stays && t != double(max_t)) {
+      fail("normal (0, 0) only for a ray still inside at max_t", "t " + num(t) + " < max_t");
+      return v;
+    }
+    // Inside up to the exit: the point itself (the segment, for a convex primitive) ...
+    if (farther_than(s, p, bound)) {
+      fail("the exit point within " + num(bound) + " of the shape", "point " + vec(exit->point));
+      return v;
+    }
+    // ... and, for a compound, no gap: a gap begins where the ray leaves a child, which is where
+    // that child is first met casting backward from the exit.
+    if (len > 0 && std::holds_alternative<Compound<T>>(s)) {
+      const Ray<T> back{exit->point, Vec2<T>(-ray.direction)};
+      for (const auto& child : detail::placed_primitives_of(s)) {
+        const auto h = raycast(child.shape, child.transform, back, exit->t);
+        if (!h) continue;
+        const double leaves = t - double(h->t) + 3 * bound / len;
+        if (leaves >= t - bound / len) continue;
+        const Vec2c q = o + d * leaves;
+        if (farther_than(s, q, bound)) {
+          fail("no point of the ray before the exit farther than " + num(bound) + " from the shape",
+               "the ray outside at " + vec(q) + " (t " + num(leaves) + ")");
+          return v;
+        }
+      }
+    }
+    if (stays) return v;
+    // Not early: the exit point is not deep inside.
+    if (deep_inside(s, p, bound)) {
+      fail("the exit point within " + num(bound) + " of the boundary", "deeper than that inside");
+      return v;
+    }
+    if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) {
+      fail("a unit exit normal", "normal " + vec(exit->normal) + " (|n| = " + num(n.norm()) + ")");
+      return v;
+    }
+    // The normal is judged where the ray really leaves: 4 bounds before the point it was deeper
+    // than the bound inside.
+    const Vec2c dm = d / d.cwiseAbs().maxCoeff();  // exact scaling first: |d|^2 may underflow
+    const Vec2c u = dm / dm.norm();
+    if (!deep_inside(s, Vec2c(p - u * (4 * bound)), bound)) {
+      v.account += "; normal not judged (the ray runs within the bound of the boundary)";
+      return v;
+    }
+    if (!outward_normal(s, p, n, bound))
+      fail("the outward normal of the boundary at the exit", "normal " + vec(exit->normal));
+  } catch (const std::exception& e) {
+    v.ok = false;
+    v.expected = "no exception";
+    v.got = e.what();
+    v.account = std::string("exception: ") + e.what() + "; s = " + describe(s);
+  }
+  return v;
+}
+
 template Verdict raycast_law<float>(const Shape<float>&, const Ray<float>&, float);
 template Verdict raycast_law<double>(const Shape<double>&, const Ray<double>&, double);
+template Verdict raycast_exit_law<float>(const Shape<float>&, const Ray<float>&, float);
+template Verdict raycast_exit_law<double>(const Shape<double>&, const Ray<double>&, double);
 template Verdict contains_law<float>(const Shape<float>&, const Vec2<float>&);
 template Verdict contains_law<double>(const Shape<double>&, const Vec2<double>&);
 

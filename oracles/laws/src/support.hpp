@@ -250,6 +250,103 @@ bool farther_than(const Shape<T>& s, const Vec2<double>& p, double d) {
   return !oracle::contains(s, p) && oracle::compare_boundary_distance(s, p, d) > 0;
 }
 
+/// p is farther than d from the closed placed shape s, exactly (as farther_than()).
+inline bool farther_than(const oracle::Placed& s, const Vec2<double>& p, double d) {
+  return !oracle::contains(s, p) && oracle::compare_boundary_distance(s, p, d) > 0;
+}
+
+/// Sign of (signed distance from p to s - x), exactly, for a primitive s or a compound of one
+/// child: inside, the signed distance is minus the distance to the boundary; outside, the distance.
+inline int compare_signed_distance(const oracle::Placed& s, const Vec2<double>& p, double x) {
+  if (oracle::contains(s, p)) return -oracle::compare_boundary_distance(s, p, -x);
+  return oracle::compare_boundary_distance(s, p, x);
+}
+
+/// The exact parts of s placed by x, each a question compare_signed_distance() answers: s itself,
+/// or each child of a compound as a compound of that one child (its child transform kept), placed
+/// by x. signed_distance() of s is the least over them.
+template <Scalar T>
+std::vector<oracle::Placed> exact_parts(const Shape<T>& s, const Transform<T>& x = Transform<T>()) {
+  std::vector<oracle::Placed> out;
+  if (!std::holds_alternative<Compound<T>>(s)) {
+    out.push_back(oracle::placed(s, x));
+    return out;
+  }
+  for (const auto& child : placed_primitives_of(s)) {
+    const Shape<T> one(Compound<T>::make_placed({child}).value());
+    out.push_back(oracle::placed(one, x));
+  }
+  return out;
+}
+
+/// signed_distance()'s bound as its documentation states it, written out here (not taken from
+/// the library): (64 * 2^-53 + 4 eps_T) * max(S, |p|_inf) + 2^-500 + denorm_min_T + placement, S the
+/// largest absolute coordinate of the shape's box, `placement` its placement's tolerance.
+template <Scalar T>
+double documented_point_bound(const Aabb<T>& box, const Vec2<T>& p, double placement) {
+  const double m = std::max(::collide::detail::scale_of(box), p.template cast<double>().cwiseAbs().maxCoeff());
+  return (64 * 0x1p-53 + 4 * eps<T>()) * m + 0x1p-500 + double(std::numeric_limits<T>::denorm_min()) + placement;
+}
+
+/// closest_points()'s bound as its documentation states it: 4 error units + 2 eps_T S + 2
+/// denorm_min_T, S the largest absolute coordinate of both shapes' boxes.
+template <Scalar T>
+double documented_witness_bound(double unit, const Aabb<T>& box_a, const Aabb<T>& box_b) {
+  const double s = std::max(::collide::detail::scale_of(box_a), ::collide::detail::scale_of(box_b));
+  return 4 * unit + 2 * eps<T>() * s + 2 * double(std::numeric_limits<T>::denorm_min());
+}
+
+/// The magnitude of signed_distance()'s answer `got` at the finite point p, judged exactly on the
+/// parts of the shape (exact_parts()): within tol of their least signed distance, every part at
+/// least got - tol and some part at most got + tol. +infinity only where that least exceeds
+/// `top` (the largest finite T) less tol. A broken rule is reported by require(false, expected,
+/// got).
+template <class Require>
+void judge_signed_magnitude(Require&& require, const std::vector<oracle::Placed>& parts, const Vec2<double>& p,
+                            double got, double tol, double top) {
+  if (std::isnan(got)) {
+    require(false, "a number for a finite point", "NaN");
+    return;
+  }
+  if (std::isinf(got)) {
+    bool beyond = got > 0;
+    for (const oracle::Placed& part : parts) beyond = beyond && compare_signed_distance(part, p, top - tol) > 0;
+    require(beyond, "infinity only for a distance beyond " + num(top) + " less the bound " + num(tol), num(got));
+    return;
+  }
+  bool above = true, below = false;
+  for (const oracle::Placed& part : parts) {
+    above = above && compare_signed_distance(part, p, got - tol) >= 0;
+    below = below || compare_signed_distance(part, p, got + tol) <= 0;
+  }
+  require(above && below, "within " + num(tol) + " of the exact signed distance",
+          num(got) + " (the exact one " + (above ? "above " + num(got + tol) : "below " + num(got - tol)) + ")");
+}
+
+/// closest_points()'s answer c judged on the exact shapes sa and sb: its distance is `dist`
+/// (distance()'s answer) bit for bit, each point lies within tol of its shape (oracle), the two
+/// points are one when the distance is 0, and otherwise |point_b - point_a| is the distance within
+/// tol. A broken rule is reported by require(false, expected, got).
+template <Scalar T, class Require>
+void judge_witness(Require&& require, const oracle::Placed& sa, const oracle::Placed& sb, const ClosestPoints<T>& c,
+                   T dist, double tol) {
+  const Vec2<double> pa = widen(c.point_a), pb = widen(c.point_b);
+  require(c.distance == dist, "distance() bit for bit: " + num(dist), num(c.distance));
+  if (!pa.allFinite() || !pb.allFinite()) {
+    require(false, "finite points", vec(c.point_a) + ", " + vec(c.point_b));
+    return;
+  }
+  require(!farther_than(sa, pa, tol), "point_a within " + num(tol) + " of a", vec(c.point_a));
+  require(!farther_than(sb, pb, tol), "point_b within " + num(tol) + " of b", vec(c.point_b));
+  if (c.distance == T(0)) {
+    require(c.point_a == c.point_b, "one point for shapes that overlap", vec(c.point_a) + " and " + vec(c.point_b));
+    return;
+  }
+  const double apart = ::collide::detail::norm_of(Vec2<double>(pb - pa));
+  require(std::fabs(apart - double(c.distance)) <= tol,
+          "|point_b - point_a| within " + num(tol) + " of the distance " + num(c.distance), num(apart));
+}
+
 /// Exact sum test: a + t rounds to exactly r with no rounding error (computed in double, where
 /// float sums are exact unless the exponents are far apart; the two-sum error catches that).
 inline bool exact_sum(double a, double t, double r) {

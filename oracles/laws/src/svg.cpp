@@ -269,6 +269,15 @@ void draw(std::ostream& out, const Case& c) {
       }
       notes.push_back("moved pair dashed green, t = (" + detail::num(c.tx) + ", " + detail::num(c.ty) + ")");
     }
+    if (a && b && c.law == Law::ClosestPoints) {
+      const ClosestPoints<T> w = closest_points(*a, *b);
+      push = std::pair{widen(w.point_a), widen(w.point_b)};
+      grow(v, first, w.point_a.x(), w.point_a.y(), w.point_a.x(), w.point_a.y());
+      grow(v, first, w.point_b.x(), w.point_b.y(), w.point_b.x(), w.point_b.y());
+      notes.push_back("closest_points(a, b): distance " + detail::num(w.distance) + ", arrow from point_a (" +
+                      detail::num(w.point_a.x()) + ", " + detail::num(w.point_a.y()) + ") to point_b (" +
+                      detail::num(w.point_b.x()) + ", " + detail::num(w.point_b.y()) + ")");
+    }
     if (a && b && info(c.law).suite == LawSuite::Moving && c.law != Law::Toi && c.law != Law::CastRaycast) {
       // The swept path: a's motion as an arrow, both shapes at the cast's time dashed green.
       const Vec2<T> va(static_cast<T>(c.vax), static_cast<T>(c.vay)), vb(static_cast<T>(c.vbx), static_cast<T>(c.vby));
@@ -295,7 +304,7 @@ void draw(std::ostream& out, const Case& c) {
                                                                    : "no answer") +
                       " at t = " + detail::num(t) + ", both drawn there dashed green");
     }
-    if (c.law == Law::Raycast || c.law == Law::PlacedShape || c.law == Law::CastRaycast) {
+    if (c.law == Law::Raycast || c.law == Law::RaycastExit || c.law == Law::PlacedShape || c.law == Law::CastRaycast) {
       const Vec2c o(c.ox, c.oy), e = o + Vec2c(c.dx, c.dy) * c.max_t;
       grow(v, first, o.x(), o.y(), o.x(), o.y());
       grow(v, first, e.x(), e.y(), e.x(), e.y());
@@ -303,10 +312,13 @@ void draw(std::ostream& out, const Case& c) {
       notes.push_back("ray (" + detail::num(c.ox) + ", " + detail::num(c.oy) + ") + t (" + detail::num(c.dx) + ", " +
                       detail::num(c.dy) + "), arrow to max_t " + detail::num(c.max_t));
     }
-    if (c.law == Law::Contains || c.law == Law::PlacedShape) {
+    if (c.law == Law::Contains || c.law == Law::SignedDistance || c.law == Law::PlacedShape) {
       point = Vec2c(c.px, c.py);
       grow(v, first, c.px, c.py, c.px, c.py);
       notes.push_back("point (" + detail::num(c.px) + ", " + detail::num(c.py) + "), black ring");
+      if (a && c.law == Law::SignedDistance)
+        notes.push_back("signed_distance(a, point) = " +
+                        detail::num(signed_distance(*a, Vec2<T>(static_cast<T>(c.px), static_cast<T>(c.py)))));
     }
   } catch (const std::exception& e) {
     notes.push_back(std::string("cannot draw: ") + e.what());

@@ -255,6 +255,15 @@ Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>
                 "distance within " + num(bound) + " of the exact gap",
                 num(d) + ", exact ~" + num(oracle::approx_signed_distance(pa, pb)));
     }
+    // Closest points, both orders: distance()'s distance to the bit, the points on the exact images.
+    for (const bool swap : {false, true}) {
+      const ClosestPoints<T> w = swap ? closest_points(b, xb, a, xa) : closest_points(a, xa, b, xb);
+      const std::string order = swap ? "closest_points(b, xb, a, xa): " : "closest_points(a, xa, b, xb): ";
+      detail::judge_witness<T>(
+          [&](bool holds, const std::string& e, const std::string& g) { j.require(holds, order + e, g); },
+          swap ? pb : pa, swap ? pa : pb, w, swap ? distance(b, xb, a, xa) : distance(a, xa, b, xb),
+          detail::documented_witness_bound(unit, bounds(a, xa), bounds(b, xb)));
+    }
   });
 }
 
@@ -306,10 +315,21 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
                   vec(box.min()) + " .. " + vec(box.max()));
         // Containment, exact outside the band.
         const bool in = contains(s, x, p);
+        const T sd = signed_distance(s, x, p);
         if (!p.allFinite()) {
           j.require(!in, "no NaN or infinite point contained", "contained");
+          const bool nan = std::isnan(p.x()) || std::isnan(p.y());
+          j.require(nan ? std::isnan(sd) : sd == std::numeric_limits<T>::infinity(),
+                    nan ? "signed distance NaN for a NaN point" : "signed distance +infinity for an infinite point",
+                    num(sd));
           return;
         }
+        // Signed distance: contains(s, x, p)'s sign to the bit, the exact image's value within its bound.
+        j.require((sd <= T(0)) == in, "signed_distance <= 0 exactly when contains (" + yes(in) + ")", num(sd));
+        detail::judge_signed_magnitude(
+            [&](bool holds, const std::string& e, const std::string& g) { j.require(holds, e, g); },
+            detail::exact_parts(s, x), widen(p), double(sd), detail::documented_point_bound(bounds(s, x), p, tol),
+            double(std::numeric_limits<T>::max()));
         const bool exact_in = oracle::contains(ps, p);
         j.v.relation = in ? Relation::Contained : Relation::Separated;
         if (in != exact_in) {
@@ -322,7 +342,9 @@ Verdict placed_shape(const Shape<T>& s, const Transform<T>& x, const Vec2<T>& p,
         }
         if (x.is_identity()) {
           const Aabb<T> world = bounds(s);
-          j.require(in == contains(s, p) && box.min() == world.min() && box.max() == world.max(),
+          const T world_sd = signed_distance(s, p);
+          j.require(in == contains(s, p) && box.min() == world.min() && box.max() == world.max() &&
+                        (sd == world_sd || (std::isnan(sd) && std::isnan(world_sd))),
                     "the world-space answers for the identity", "a difference");
         }
         // Ray cast: a hit lies on the image within the bound; a miss passes no deeper.

@@ -30,7 +30,10 @@ struct PairEvents {
 /// A broadphase structure BP (DynamicTree, SweepAndPrune or UniformGrid of scalar T) that reports
 /// pair events. add/move/remove/set_filter go through the tracker, which remembers what changed;
 /// update() compares the changed proxies' pairs now with their pairs at the last update.
-/// The current pairs are exactly those of structure().pairs() after each update().
+/// The current pairs are exactly those of structure().pairs() after each update(). When the
+/// proxies added since the last rebuild, less those removed, make up half of a DynamicTree (and
+/// at least 1,024), update() first rebuilds it top down (DynamicTree::rebuild: the same answers,
+/// faster queries); a world that only moves, or adds and removes as many, never rebuilds.
 ///
 /// Thread safety: as the structures (const members may run concurrently; nothing may run while
 /// a non-const member does).
@@ -43,6 +46,7 @@ class PairTracker {
   /// Adds a proxy; its pairs begin at the next update. Errors: as BP::add.
   ProxyId add(const Aabb<T>& box, std::uint64_t user = 0, Filter filter = {}) {
     const ProxyId id = bp_.add(box, user, filter);
+    ++added_;
     grow(id.index);
     ids_[id.index] = id;
     partners_[id.index].clear();
@@ -67,6 +71,7 @@ class PairTracker {
   /// Removes a proxy; its pairs end at the next update. Errors: InvalidProxy.
   void remove(ProxyId id) {
     bp_.remove(id);
+    if (added_ > 0) --added_;
     for (const std::uint32_t other : partners_[id.index]) {
       pending_ended_.push_back(ordered_pair(id, ids_[other]));
       erase_sorted(partners_[other], id.index);
@@ -83,6 +88,14 @@ class PairTracker {
   /// once, in no particular order. Allocates only while its buffers grow.
   void update(PairEvents& out) {
     if constexpr (requires { bp_.flush(); }) bp_.flush();
+    if constexpr (requires { bp_.rebuild(); }) {
+      // Many one-by-one insertions leave a tree that queries slowly: rebuild it once the growth
+      // since the last rebuild is half of it (a few rebuilds over any number of additions).
+      if (added_ >= kRebuildMin && 2 * added_ >= bp_.size()) {
+        bp_.rebuild();
+        added_ = 0;
+      }
+    }
     out.clear();
     out.ended.swap(pending_ended_);
     if constexpr (kFat) refresh_fat_neighbours();
@@ -132,7 +145,11 @@ class PairTracker {
   static constexpr bool kFat = requires(BP & b, const BP& cb, ProxyId id, const Aabb<T>& box) {
     { b.move_fat(id, box) } -> std::same_as<bool>;
     cb.query_fat(id, [](ProxyId) {});
+    cb.for_each_fat_pair([](ProxyId, ProxyId) {});
   };
+  /// Below this many new proxies (or new fat boxes) the per-proxy paths are cheaper than a tree
+  /// rebuild or a walk of every pair.
+  static constexpr std::size_t kRebuildMin = 1024;
 
   void grow(std::uint32_t i) {
     if (i >= ids_.size()) {
@@ -147,8 +164,22 @@ class PairTracker {
   }
 
   /// Re-queries the fat-box neighbours of every proxy that got a new fat box, on both sides.
-  /// Runs before any pair is decided, so every neighbour list is current when it is read.
+  /// Runs before any pair is decided, so every neighbour list is current when it is read. When a
+  /// large share of the proxies got one (the first update of a full world), one walk of every
+  /// pair of fat boxes refills all the lists instead of a query per proxy.
   void refresh_fat_neighbours() {
+    std::size_t refat = 0;
+    for (const std::uint32_t i : changed_) refat += refat_[i];
+    if (refat >= kRebuildMin && 4 * refat >= bp_.size()) {
+      for (std::vector<std::uint32_t>& n : near_) n.clear();
+      bp_.for_each_fat_pair([&](ProxyId a, ProxyId b) {
+        near_[a.index].push_back(b.index);
+        near_[b.index].push_back(a.index);
+      });
+      for (std::vector<std::uint32_t>& n : near_) std::sort(n.begin(), n.end());
+      for (const std::uint32_t i : changed_) refat_[i] = 0;
+      return;
+    }
     for (const std::uint32_t i : changed_) {
       if (!refat_[i] || !bp_.contains(ids_[i])) continue;
       refat_[i] = 0;
@@ -220,6 +251,7 @@ class PairTracker {
   std::vector<ProxyPair> pending_ended_;          ///< pairs ended by removals
   std::vector<std::vector<std::uint32_t>> near_;  ///< DynamicTree only: sorted fat-box neighbours
   std::vector<char> refat_;                       ///< DynamicTree only: got a new fat box since
+  std::size_t added_ = 0;                         ///< proxies added less those removed since the last rebuild
 };
 
 }  // namespace collide::broadphase

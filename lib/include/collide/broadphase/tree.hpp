@@ -112,41 +112,42 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   /// list, so any number of pairs can be visited in constant memory beyond the traversal stack.
   template <class F>
   void for_each_pair(F&& f) const {
+    walk_leaf_pairs([&](const Node& a, const Node& b) {
+      const auto& sa = slots_[a.slot];
+      const auto& sb = slots_[b.slot];
+      const bool hit = boxes_overlap(sa.box, sb.box);
+      return !hit || !accepts(sa.filter, sb.filter) || call_continue(f, slots_.id(a.slot), slots_.id(b.slot));
+    });
+  }
+
+  /// Calls f(ProxyId a, ProxyId b) once for every pair of proxies whose fat boxes meet (closed),
+  /// filters ignored: all the neighbours query_fat() finds, in one walk. f may return bool, false
+  /// stops.
+  template <class F>
+  void for_each_fat_pair(F&& f) const {
+    walk_leaf_pairs(
+        [&](const Node& a, const Node& b) { return call_continue(f, slots_.id(a.slot), slots_.id(b.slot)); });
+  }
+
+  /// Rebuilds the tree from its leaves top down, as add_batch() builds one (median splits of the
+  /// fat boxes' centres), with every node stored after its parent: after many one-by-one
+  /// insertions a query then visits fewer nodes, read closer together. Handles, stored and fat
+  /// boxes and every answer stay as they were. Allocates the new nodes.
+  void rebuild() {
     if (root_ < 0) return;
-    struct Job {
-      std::int32_t a, b;
-    };
-    LocalStack<Job> jobs;
-    // A pair of distinct nodes is pushed only when their boxes overlap: the walk visits the same
-    // pairs in the same order as testing them when popped, with a fraction of the stack traffic.
-    const auto push_if_overlapping = [&](std::int32_t x, std::int32_t y) {
-      if (boxes_overlap(node(x).box, node(y).box)) jobs.push({x, y});
-    };
-    jobs.push({root_, root_});
-    while (!jobs.empty()) {
-      const Job j = jobs.pop();
-      const Node& a = node(j.a);
-      if (j.a == j.b) {
-        if (a.leaf()) continue;
-        jobs.push({a.child1, a.child1});
-        jobs.push({a.child2, a.child2});
-        push_if_overlapping(a.child1, a.child2);
-        continue;
-      }
-      const Node& b = node(j.b);
-      if (a.leaf() && b.leaf()) {
-        const auto& sa = slots_[a.slot];
-        const auto& sb = slots_[b.slot];
-        const bool hit = boxes_overlap(sa.box, sb.box);
-        if (hit && accepts(sa.filter, sb.filter) && !call_continue(f, slots_.id(a.slot), slots_.id(b.slot))) return;
-      } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
-        push_if_overlapping(a.child1, j.b);
-        push_if_overlapping(a.child2, j.b);
-      } else {
-        push_if_overlapping(j.a, b.child1);
-        push_if_overlapping(j.a, b.child2);
-      }
+    std::vector<Node> old;
+    old.swap(nodes_);
+    free_nodes_.clear();
+    std::vector<Centred> leaves;
+    leaves.reserve(slots_.size());
+    for (std::uint32_t s = 0; s < slots_.capacity(); ++s) {
+      if (!slots_[s].live) continue;
+      const std::int32_t leaf = slots_[s].extra.leaf;
+      const Box<T>& fat = old[std::size_t(leaf)].box;
+      leaves.push_back({{Calc(fat.min.x()) + Calc(fat.max.x()), Calc(fat.min.y()) + Calc(fat.max.y())}, leaf});
     }
+    nodes_.reserve(2 * leaves.size());  // no reallocation while build_copy holds references
+    root_ = build_copy(leaves.data(), leaves.data() + leaves.size(), old, -1);
   }
 
   /// Height of the tree (0 for one leaf, -1 when empty).
@@ -225,6 +226,44 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     }
   }
 
+  /// The walk of every pair of distinct leaves whose (fat) boxes meet, each once: a pair of
+  /// nodes is pushed only when their boxes overlap, so the walk visits the same pairs in the same
+  /// order as testing them when popped, with a fraction of the stack traffic. Calls
+  /// leaf_pair(const Node&, const Node&); false stops.
+  template <class LeafPair>
+  void walk_leaf_pairs(LeafPair&& leaf_pair) const {
+    if (root_ < 0) return;
+    struct Job {
+      std::int32_t a, b;
+    };
+    LocalStack<Job> jobs;
+    const auto push_if_overlapping = [&](std::int32_t x, std::int32_t y) {
+      if (boxes_overlap(node(x).box, node(y).box)) jobs.push({x, y});
+    };
+    jobs.push({root_, root_});
+    while (!jobs.empty()) {
+      const Job j = jobs.pop();
+      const Node& a = node(j.a);
+      if (j.a == j.b) {
+        if (a.leaf()) continue;
+        jobs.push({a.child1, a.child1});
+        jobs.push({a.child2, a.child2});
+        push_if_overlapping(a.child1, a.child2);
+        continue;
+      }
+      const Node& b = node(j.b);
+      if (a.leaf() && b.leaf()) {
+        if (!leaf_pair(a, b)) return;
+      } else if (b.leaf() || (!a.leaf() && a.height >= b.height)) {
+        push_if_overlapping(a.child1, j.b);
+        push_if_overlapping(a.child2, j.b);
+      } else {
+        push_if_overlapping(j.a, b.child1);
+        push_if_overlapping(j.a, b.child2);
+      }
+    }
+  }
+
   /// A leaf and twice its box centre, for the top-down build.
   struct Centred {
     Calc c[2];
@@ -235,6 +274,21 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
   /// the longer axis of the centres' extent. Returns its root.
   std::int32_t build_top_down(Centred* first, Centred* last) {
     if (last - first == 1) return first->leaf;
+    Centred* mid = split_at_median(first, last);
+    const std::int32_t left = build_top_down(first, mid), right = build_top_down(mid, last);
+    const std::int32_t parent = alloc_node();
+    Node& n = node(parent);
+    n.child1 = left;
+    n.child2 = right;
+    n.box = merged(node(left).box, node(right).box);
+    n.height = 1 + std::max(node(left).height, node(right).height);
+    node(left).parent = node(right).parent = parent;
+    return parent;
+  }
+
+  /// Reorders [first, last) (at least two) so that the first half holds the smaller centres on
+  /// the longer axis of the centres' extent; returns the middle.
+  static Centred* split_at_median(Centred* first, Centred* last) {
     Calc lo[2] = {first->c[0], first->c[1]}, hi[2] = {first->c[0], first->c[1]};
     for (const Centred* i = first + 1; i != last; ++i) {
       for (int k = 0; k < 2; ++k) {
@@ -245,15 +299,29 @@ class DynamicTree : public ProxyOps<DynamicTree<T>, T> {
     const int axis = (hi[0] - lo[0]) >= (hi[1] - lo[1]) ? 0 : 1;
     Centred* mid = first + (last - first) / 2;
     std::nth_element(first, mid, last, [axis](const Centred& a, const Centred& b) { return a.c[axis] < b.c[axis]; });
-    const std::int32_t left = build_top_down(first, mid), right = build_top_down(mid, last);
-    const std::int32_t parent = alloc_node();
-    Node& n = node(parent);
+    return mid;
+  }
+
+  /// rebuild()'s build: the subtree over leaves [first, last) of `old` (their nodes copied), each
+  /// node allocated before its children, under `parent`. Returns its root.
+  std::int32_t build_copy(Centred* first, Centred* last, const std::vector<Node>& old, std::int32_t parent) {
+    const std::int32_t i = alloc_node();
+    if (last - first == 1) {
+      Node& n = node(i);
+      n = old[std::size_t(first->leaf)];
+      n.parent = parent;
+      slots_[n.slot].extra.leaf = i;
+      return i;
+    }
+    Centred* mid = split_at_median(first, last);
+    const std::int32_t left = build_copy(first, mid, old, i), right = build_copy(mid, last, old, i);
+    Node& n = node(i);
+    n.parent = parent;
     n.child1 = left;
     n.child2 = right;
     n.box = merged(node(left).box, node(right).box);
     n.height = 1 + std::max(node(left).height, node(right).height);
-    node(left).parent = node(right).parent = parent;
-    return parent;
+    return i;
   }
 
   ProxyId add_box(const Box<T>& b, std::uint64_t user, Filter filter) {

@@ -764,9 +764,9 @@ inline std::optional<CoreContact> speculative_contact_cores(const Core& p, const
 /// Distance between two dilated cores that do not overlap (rescaled when tiny).
 inline Calc core_gap(const Core& p, const Core& q) {
   const int k = tiny_scale(p, q);
-  if (k == 0) return std::sqrt(closest_points(p, q).dist2) - p.radius - q.radius;
+  if (k == 0) return gap_of(closest_points(p, q), p, q);
   const Core ps = scaled(p, k), qs = scaled(q, k);
-  return std::ldexp(std::sqrt(closest_points(ps, qs).dist2) - ps.radius - qs.radius, -k);
+  return std::ldexp(gap_of(closest_points(ps, qs), ps, qs), -k);
 }
 
 }  // namespace collide::detail

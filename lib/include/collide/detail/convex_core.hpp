@@ -339,6 +339,12 @@ inline Closest closest_points(const Core& p, const Core& q) noexcept {
   return best;
 }
 
+/// The gap of two dilated cores from their closest points (closest_points(p, q)): the one formula
+/// of distance() and of its witness points, so that both give the same value to the bit.
+inline Calc gap_of(const Closest& c, const Core& p, const Core& q) noexcept {
+  return std::sqrt(c.dist2) - p.radius - q.radius;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Penetration by separating axes, for cores that intersect.
 

@@ -21,6 +21,9 @@
 
 #include "collide/collide.hpp"
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <type_traits>
 #include <utility>
@@ -61,6 +64,7 @@ struct Placed {
 namespace exact {
 bool overlaps(const Placed& a, const Placed& b);
 bool contains(const Placed& s, const Vec2<double>& p);
+bool contains_shape(const Placed& outer, const Placed& inner);
 int compare_distance(const Placed& a, const Placed& b, double d);
 bool within_band(const Placed& a, const Placed& b, double band);
 bool separates(const Placed& a, const Placed& b, const Vec2<double>& t);
@@ -115,6 +119,15 @@ bool overlaps(const A& a, const B& b) {
 template <OracleInput S, Scalar T>
 bool contains(const S& s, const Vec2<T>& p) {
   return exact::contains(as_exact_input(s), p.template cast<double>());
+}
+
+/// Exact: the closed shape inner lies wholly in the closed shape outer (touching from inside
+/// counts). outer must be a primitive or a compound of one child (placed by its child transform);
+/// a compound of several children throws Unsupported (containment in a union is not defined
+/// here). Circles and capsules are decided through squared distances, without square roots.
+template <OracleInput O, OracleInput I>
+bool contains(const O& outer, const I& inner) {
+  return exact::contains_shape(as_exact_input(outer), as_exact_input(inner));
 }
 
 /// Exact sign of (gap(a, b) - d), gap = Euclidean distance between the closed shapes (0 when they
@@ -191,6 +204,39 @@ bool passes_deeper(const S& s, const Vec2<double>& p, const Vec2<double>& q, dou
 template <OracleInput A, OracleInput B>
 double approx_signed_distance(const A& a, const B& b) {
   return exact::approx_signed_distance(as_exact_input(a), as_exact_input(b));
+}
+
+/// The outputs of mass_properties(), in this order: mass, centroid x, centroid y, inertia about
+/// the centroid, inertia about the origin.
+enum class MassOutput : std::uint8_t { Mass, CentroidX, CentroidY, Inertia, OriginInertia };
+/// How many outputs mass_properties() has.
+inline constexpr std::size_t kMassOutputs = 5;
+/// One value per output, in MassOutput's order.
+using MassValues = std::array<double, kMassOutputs>;
+
+namespace exact {
+std::array<bool, kMassOutputs> mass_within(const Placed& s, double density, const MassValues& values,
+                                           const MassValues& bounds);
+MassValues approx_mass(const Placed& s, double density);
+}  // namespace exact
+
+/// Exact, per output k: |values[k] - x| <= bounds[k] for the exact output x of mass.hpp's
+/// definition for s at this density (placed: the centroid is the placement's image, mass and
+/// inertia are kept). Shapes with a round part (pi) and capsules (their length |b - a|) are judged
+/// for every x in a bracket of rationals around the exact value, 2^-119 wide relatively: only a
+/// value within that of the bound's edge can be judged outside. Values, bounds and the density must
+/// be finite (InvalidInput otherwise).
+template <OracleInput S>
+std::array<bool, kMassOutputs> mass_within(const S& s, double density, const MassValues& values,
+                                           const MassValues& bounds) {
+  return exact::mass_within(as_exact_input(s), density, values, bounds);
+}
+
+/// For reports, and for the bounds that scale with them: the exact outputs rounded to double
+/// (the middle of their brackets).
+template <OracleInput S>
+MassValues approx_mass(const S& s, double density) {
+  return exact::approx_mass(as_exact_input(s), density);
 }
 
 }  // namespace collide::oracle

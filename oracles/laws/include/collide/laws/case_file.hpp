@@ -20,6 +20,7 @@
 ///     rotation 1 mirror 0                             # rotation law
 ///     ray 0x0p+0 0x0p+0 0x1p+0 0x0p+0 max_t 0x1p+4    # raycast laws: origin, direction
 ///     point 0x1p+0 -0x1p-2                            # contains laws: the point
+///     density 0x1p+0                                  # mass law: the density
 ///     values 0x1p+0 nan -inf                          # rejection laws: raw values (kind = shape a's)
 ///     motion 0x1p+0 0x0p+0 0x0p+0 0x0p+0 max_t 0x1p+0 # cast laws: va, vb, max_t
 ///     sweep a lx ly c0x c0y c1x c1y a0 a1             # toi law: local centre, centre at 0 and 1, angles
@@ -64,6 +65,7 @@ struct Case {
   double ox = 0, oy = 0, dx = 0, dy = 0;     ///< raycast laws: ray origin and direction
   double max_t = 0;                          ///< raycast and cast laws: end of the interval
   double px = 0, py = 0;                     ///< contains laws: the point
+  double density = 1;                        ///< mass law: the density
   double vax = 0, vay = 0, vbx = 0, vby = 0;     ///< cast laws: the velocities of a and b
   std::optional<std::array<double, 8>> sweep_a;  ///< toi law: a's sweep (local centre, c0, c1, a0, a1)
   std::optional<std::array<double, 8>> sweep_b;  ///< toi law: b's sweep

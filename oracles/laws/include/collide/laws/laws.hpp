@@ -108,6 +108,20 @@ Verdict bounds_law(const Shape<T>& s);
 template <Scalar T>
 Verdict raycast_law(const Shape<T>& s, const Ray<T>& ray, T max_t);
 
+/// Law raycast_exit. e = raycast_exit(s, ray, max_t), judged by raycast.hpp's contract with its
+/// bound delta = raycast_exit_tolerance(s, ray): e exists exactly when contains(s, origin) (the
+/// library's exact decision, itself judged by law contains); 0 <= t <= max_t; its point is within
+/// delta (plus t's rounding) of origin + t * direction; normal (0, 0) only with t = max_t. Before
+/// the exit the ray stays in the shape within delta, exactly: the point is not farther than delta
+/// from the shape (for a primitive, convex, this holds the whole segment from the origin), and for
+/// a compound no point just past where the ray leaves a child (3 delta on, found by casting each
+/// child backward from the exit) before the exit is farther than delta from the union. At a
+/// boundary exit the point is not deeper than delta inside any child (the exit is not early), and
+/// where the ray was deeper than delta inside 4 delta before it, the normal is a unit outward
+/// normal there (as law raycast judges it). Every judgement is the oracle's.
+template <Scalar T>
+Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t);
+
 /// Law hierarchy. overlaps(compound, x) == any child overlaps x (library against library, identical), and
 /// the bounding-box early-out never changes an answer: when the compound's cached box misses x's
 /// box, no child overlaps x, by the library and by the oracle. compound must hold a Compound.
@@ -145,6 +159,34 @@ Verdict distance_law(const Shape<T>& a, const Shape<T>& b);
 /// disagreement. NaN or infinite points: false.
 template <Scalar T>
 Verdict contains_law(const Shape<T>& s, const Vec2<T>& p);
+
+/// Law contains_shape. contains(outer, inner) for both orders of the pair: for a primitive outer,
+/// exactly oracle::contains(outer, inner) (an inner compound with child transforms: the oracle on
+/// the images the library computed, a difference from the exact answer being a disagreement), the
+/// same answer for the concrete outer as for the variant; for a compound outer,
+/// Error::CompoundOuter. Any other difference fails (decisions are exact).
+template <Scalar T>
+Verdict contains_shape_law(const Shape<T>& a, const Shape<T>& b);
+
+/// Law signed_distance. d = signed_distance(s, p): d <= 0 exactly when contains(s, p) (to the bit),
+/// and so when the oracle's containment holds (a compound with child transforms: a difference only
+/// within placement_tolerance(s) of a child's boundary, where the oracle on the library's images
+/// agrees); d within signed_distance_tolerance(s, p)'s documented formula of the exact signed
+/// distance (for a compound
+/// the least of its children's, each judged by oracle::compare_boundary_distance), +infinity only
+/// where that exceeds the largest finite T less the bound. NaN for a NaN point, +infinity for an
+/// infinite one.
+template <Scalar T>
+Verdict signed_distance_law(const Shape<T>& s, const Vec2<T>& p);
+
+/// Law closest_points. c = closest_points(a, b), in both argument orders: c.distance is distance()'s
+/// answer bit for bit; each point lies within closest_points_tolerance(a, b)'s documented formula
+/// (4 rounding_tolerance(a, b) + 2 eps_T S + 2 denorm_min_T) of its shape (oracle);
+/// for a distance of 0 the two points are one, otherwise |point_b - point_a| is the distance within
+/// that bound (so the points realise the gap: a point deeper than the bound inside its shape would
+/// lie farther from the other shape).
+template <Scalar T>
+Verdict closest_points_law(const Shape<T>& a, const Shape<T>& b);
 
 /// Law touching. Touching judged exactly: when the oracle says a and b touch (signed distance exactly
 /// 0), overlaps(a, b) and overlaps(b, a) are true, for every pair (no band); when the oracle says
@@ -252,7 +294,9 @@ Verdict placed_agreement(const Shape<T>& a, const Transform<T>& xa, const Shape<
 /// Law placed_outputs. The rounded outputs of placed shapes against the exact images: contact normal a unit
 /// vector, depth >= 0 and (two primitives) within 4 rounding_tolerance(a, xa, b, xb) plus T's
 /// rounding of the exact depth, a moved by -normal (depth + 2 bounds) apart, each point within
-/// depth + bound of both shapes; distance within that bound of the exact gap.
+/// depth + bound of both shapes; distance within that bound of the exact gap; closest_points() in
+/// both orders judged as in law closest_points, on the exact images with
+/// closest_points_tolerance(a, xa, b, xb).
 template <Scalar T>
 Verdict placed_outputs(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
@@ -264,7 +308,9 @@ template <Scalar T>
 Verdict placed_resolution(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb);
 
 /// Law placed_shape. One placed shape: bounds(s, x) contains the exact image; contains(s, x, p) equals the
-/// oracle outside transform_tolerance(s, x) of the boundary; a raycast hit has 0 <= t <= max_t and
+/// oracle outside transform_tolerance(s, x) of the boundary; signed_distance(s, x, p) has contains(s,
+/// x, p)'s sign and lies within signed_distance_tolerance(s, x, p) of the exact image's signed
+/// distance (NaN and infinite points as in law signed_distance); a raycast hit has 0 <= t <= max_t and
 /// its point within raycast_tolerance(s, x, ray) of the image and on the ray; a miss means no
 /// point of the segment to max_t lies deeper than that bound in the image (oracle::passes_deeper).
 /// Identity: the world-space answers.
@@ -355,6 +401,20 @@ Verdict manifold_resting(const Shape<T>& a, const Shape<T>& b);
 template <Scalar T>
 Verdict manifold_speculative(const Shape<T>& a, const Shape<T>& b);
 
+// ---------------------------------------------------------------------------------------------
+// Mass properties (oracles/laws/src/mass_law.cpp).
+
+/// Law mass. mass_properties(s, density), judged by mass.hpp's contract against the oracle's exact
+/// mass, centroid, inertia and origin inertia (oracle::mass_within), each within the bound the
+/// contract documents, written out here from the exact values (so mass_tolerance() is judged too:
+/// it must agree with that bound to 2^-20); OutOfRange only where an exact output plus its bound
+/// passes T's largest value. Placed by x: the centroid and origin inertia judged on x's exact
+/// image, mass and inertia those of world space to the bit. Moved by t (translated()): judged
+/// again, and an exact move (every stored position plus t exact) keeps mass and inertia to the bit.
+/// A density that is NaN or infinite gives NonFinite in both forms, a negative one NegativeDensity.
+template <Scalar T>
+Verdict mass_law(const Shape<T>& s, T density, const Vec2<T>& t, const Transform<T>& x);
+
 /// Laws placed_separation, placed_feature_ids and placed_speculative: separation, feature_ids and
 /// speculative for a placed by xa and b placed by xb, judged on the exact images (a point's pair:
 /// the children its id names, each the exact image under its child transform and then its body's),
@@ -398,6 +458,17 @@ struct CastInput {
 /// [0, max_t]; an iteration limit none in [0, t]. Relation: Overlapping or Separated at the start.
 template <Scalar T>
 Verdict cast_law(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
+
+/// Cast leaving law. shape_cast(..., CastOptions{.stop_at_overlap = false}), judged by cast.hpp's
+/// "Leaving an overlap" with eps = cast_tolerance(): when contact(a, xa, b, xb) is absent or its
+/// normal closes along va - vb, the default cast's answer bit for bit; otherwise a valid answer
+/// with 0 <= t <= max_t in which every pair of primitives (oracle::placed parts) apart by more than
+/// eps at the start is apart over [0, t] (over [0, max_t] after a miss), a hit is within eps of a
+/// pair that did not overlap at the start, with a unit normal, and a pair of shapes whose every
+/// pair of primitives overlaps at the start is a miss. Relation: Overlapping or Separated at the
+/// start.
+template <Scalar T>
+Verdict cast_leaving(const Shape<T>& a, const Shape<T>& b, const CastInput<T>& in);
 
 /// Cast symmetry and relative motion: swapping a and b (with their transforms) gives the same
 /// outcome and t bit for bit and the reversed normal (bit for bit, except at t = 0 from an
