@@ -110,8 +110,8 @@ inline constexpr std::size_t kMovePathCapacity = std::size_t(kMoveMaxIterations)
 /// The resting limit in units of (cast tolerance + rho): a non-resting body's casts then start
 /// beyond their tolerance even at half its gap.
 inline constexpr Calc kMoveBandFactor = 4;
-/// The automatic skin in units of max(rho, cast tolerance): room for the inflation to halve five
-/// times (five hits in a row, each close to the last) and still stay beyond both.
+/// The automatic skin in units of max(rho, cast tolerance): room for the inflation to shrink by
+/// the margin at many hits in a row, each close to the last, and still stay beyond both.
 inline constexpr Calc kMoveSkinFactor = 64;
 
 /// Why a move stopped.
@@ -335,7 +335,7 @@ class SlideMove {
     const bool room = survey_start(displacement);
     out_.skin = skin_;
     if (!room) return finish(MoveOutcome::Blocked);
-    // 2. No part of the displacement goes into none of the resting planes: nothing moves.
+    // 2. Every part of the displacement goes into a resting plane: nothing moves.
     const Vec2c free = clip(d);
     if (!(collide::detail::norm_of(free) > rho_))
       return finish(collide::detail::norm_of(d) > rho_ ? MoveOutcome::Blocked : MoveOutcome::Completed);
@@ -521,7 +521,7 @@ class SlideMove {
   }
 
   /// The mover with its radius grown by at least kappa, rounded up to T.
-  M inflate(Calc kappa) const noexcept {
+  M inflate(Calc kappa) const {
     const Calc want = Calc(mover_.radius()) + kappa;
     T r = static_cast<T>(want);
     if (Calc(r) < want) r = std::nextafter(r, std::numeric_limits<T>::infinity());
