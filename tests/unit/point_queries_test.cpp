@@ -138,6 +138,13 @@ TYPED_TEST(SignedDistance, FarAndTinyPoints) {
   // A point at T's largest magnitude: its squares would overflow without the rescaling.
   const T big = std::numeric_limits<T>::max() / 4;
   expect_signed(unit, V(big, 0), double(big) - 1);
+  // The same for a polygon and a capsule, whose distances go through their cores: beyond 2^500
+  // (double) the squares would overflow without the rescaling.
+  const T far = std::is_same_v<T, float> ? T(0x1p120) : T(0x1p600);
+  const ConvexPolygon<T> tri{V(0, 0), V(4, 0), V(0, 4)};
+  const Capsule<T> capsule(V(0, 0), V(4, 0), 1);
+  expect_signed(tri, V(far, 0), double(far) - 4);
+  expect_signed(capsule, V(0, -far), double(far) - 1);
   // Beyond T's range the distance is +infinity (sqrt 2 times the largest value).
   const T top = std::numeric_limits<T>::max();
   EXPECT_EQ(signed_distance(unit, V(top, top)), std::numeric_limits<T>::infinity());

@@ -169,7 +169,7 @@ class PairTracker {
   /// pair of fat boxes refills all the lists instead of a query per proxy.
   void refresh_fat_neighbours() {
     std::size_t refat = 0;
-    for (const std::uint32_t i : changed_) refat += refat_[i];
+    for (const std::uint32_t i : changed_) refat += refat_[i] ? 1U : 0U;
     if (refat >= kRebuildMin && 4 * refat >= bp_.size()) {
       for (std::vector<std::uint32_t>& n : near_) n.clear();
       bp_.for_each_fat_pair([&](ProxyId a, ProxyId b) {
