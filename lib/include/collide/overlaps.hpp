@@ -1,10 +1,13 @@
 #pragma once
 /// @file overlaps.hpp
 /// The overlap decision for any two shapes: exact for every pair (decide.hpp), compounds walked
-/// child by child behind their cached boxes. Error contract: tolerances.hpp.
+/// child by child behind their cached boxes. A pair that contact()'s own steps decide clear of
+/// rounding (detail::overlap_pair) is answered without the exact decision, so that overlaps()
+/// costs no more than contact(). Error contract: tolerances.hpp.
 
 #include "collide/compound.hpp"
 #include "collide/decide.hpp"
+#include "collide/detail/contact_pairs.hpp"
 #include "collide/registry.hpp"
 #include "collide/shape_traits.hpp"
 #include "collide/shapes.hpp"
@@ -27,9 +30,9 @@ bool decide_primitives(const A& a, const B& b) {
       return decide_primitives(a, widened_shape(b));
     }
   } else if constexpr (static_cast<int>(kind_of_v<A>) <= static_cast<int>(kind_of_v<B>)) {
-    return decide::pair(a, b);
+    return overlap_pair(a, b);
   } else {
-    return decide::pair(b, a);
+    return decide_primitives(b, a);
   }
 }
 

@@ -287,6 +287,34 @@ Calc raycast_tolerance(const S& shape, const Ray<scalar_of_t<S>>& ray) {
 
 namespace detail {
 
+/// A ray's finite, nonzero direction d as u * len_s * 2^e, u of unit length and len_s in
+/// [0.5, 1.5): scaled by a power of two first (exact), then normalised, so nothing overflows.
+struct ScaledDirection {
+  Vec2c u;
+  Calc len_s = 0;
+  int e = 0;
+  explicit ScaledDirection(const Vec2c& d) noexcept {
+    static_cast<void>(std::frexp(d.cwiseAbs().maxCoeff(), &e));
+    const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+    len_s = ds.norm();
+    u = ds / len_s;
+  }
+  /// The distance along u at ray parameter t: t |d|.
+  Calc distance(Calc t) const noexcept { return std::ldexp(t * len_s, e); }
+  /// The ray parameter t = s / |d| at distance s along u, ordered so that neither step
+  /// overflows.
+  Calc time(Calc s) const noexcept { return e > 0 ? std::ldexp(s, -e) / len_s : std::ldexp(s / len_s, -e); }
+};
+
+/// A ray parameter in T rounded toward 0, so that the ray up to it stays before the point it
+/// names: rounded to nearest, a subnormal t may land a whole denorm_min * |direction| past it.
+template <Scalar T>
+T toward_zero(Calc t) noexcept {
+  T rounded = static_cast<T>(t);
+  if (Calc(rounded) > t) rounded = std::nextafter(rounded, T(0));
+  return rounded;
+}
+
 /// raycast() with its result in T, for a shape stored or placed (images, placed compounds).
 template <Scalar T, class S>
 std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) {
@@ -299,28 +327,19 @@ std::optional<RayHit<T>> raycast_as(const S& shape, const Ray<T>& ray, T max_t) 
     if (!inside) return std::nullopt;
     return RayHit<T>{T(0), ray.origin, Vec2<T>::Zero()};
   }
-  // Unit direction without overflow: scale by a power of two first (exact), then normalise.
-  int e = 0;
-  static_cast<void>(std::frexp(dm, &e));
-  const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
-  const Calc len_s = ds.norm();  // |d| = len_s * 2^e
-  const Vec2c u = ds / len_s;
-  if (inside) return RayHit<T>{T(0), ray.origin, Vec2<T>((-u).template cast<T>())};
+  const ScaledDirection dir(d);
+  if (inside) return RayHit<T>{T(0), ray.origin, Vec2<T>((-dir.u).template cast<T>())};
 
-  UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
+  UnitRay r{o, dir.u, dir.distance(tmax), 0};
   const Calc m = std::max(scale_of(calc_bounds(shape)), o.cwiseAbs().maxCoeff());
   r.pad = 4 * kUnitRoundoff * m + 16 * kSmallestDouble;  // no 2^-500 floor: tiny shapes are rescaled
   const std::optional<UnitRayHit> h = visit_shape(shape, [&](const auto& x) { return ray_concrete(x, r); });
   if (!h) return std::nullopt;
-  // t = s / |d| = s / len_s * 2^-e, ordered so that neither step overflows (len_s is in [0.5, 1.5)).
-  const Calc t = e > 0 ? std::ldexp(h->s, -e) / len_s : std::ldexp(h->s / len_s, -e);
+  const Calc t = dir.time(h->s);
   if (!(t <= tmax)) return std::nullopt;
-  const Vec2c point = o + u * h->s;
-  // t rounded toward 0, so that no ray point before it is deeper than the hit: rounded to nearest,
-  // a subnormal t may land a whole denorm_min * |direction| past it.
-  T rounded = static_cast<T>(t);
-  if (Calc(rounded) > t) rounded = std::nextafter(rounded, T(0));
-  return RayHit<T>{rounded, point.template cast<T>(), h->normal.template cast<T>()};
+  const Vec2c point = o + dir.u * h->s;
+  // No ray point before the hit's t is deeper than the hit.
+  return RayHit<T>{toward_zero<T>(t), point.template cast<T>(), h->normal.template cast<T>()};
 }
 
 }  // namespace detail
@@ -524,13 +543,8 @@ std::optional<RayHit<T>> raycast_exit_as(const S& shape, const Ray<T>& ray, T ma
   const auto stays = [&] { return RayHit<T>{max_t, Vec2<T>((o + d * tmax).template cast<T>()), Vec2<T>::Zero()}; };
   const Calc dm = d.cwiseAbs().maxCoeff();
   if (dm == 0) return stays();
-  // The unit direction and |d| as in raycast_as(): scaled by a power of two first (exact).
-  int e = 0;
-  static_cast<void>(std::frexp(dm, &e));
-  const Vec2c ds(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
-  const Calc len_s = ds.norm();
-  const Vec2c u = ds / len_s;
-  UnitRay r{o, u, std::ldexp(tmax * len_s, e), 0};
+  const ScaledDirection dir(d);
+  UnitRay r{o, dir.u, dir.distance(tmax), 0};
   const Calc m = std::max(scale_of(calc_bounds(shape)), o.cwiseAbs().maxCoeff());
   r.pad = 4 * kUnitRoundoff * m + 16 * kSmallestDouble;
   // Children that touch along the ray join across their spans' rounding (a few pads), well
@@ -538,13 +552,11 @@ std::optional<RayHit<T>> raycast_exit_as(const S& shape, const Ray<T>& ray, T ma
   const LineSpan h = visit_shape(shape, [&](const auto& x) { return exit_concrete(x, r, 4 * r.pad); });
   if (!(h.exit < r.s_max)) return stays();
   const Calc s = std::max(Calc(0), h.exit);
-  const Calc t = e > 0 ? std::ldexp(s, -e) / len_s : std::ldexp(s / len_s, -e);
+  const Calc t = dir.time(s);
   if (!(t < tmax)) return stays();
-  // t rounded toward 0: the ray up to it stays in the shape.
-  T rounded = static_cast<T>(t);
-  if (Calc(rounded) > t) rounded = std::nextafter(rounded, T(0));
-  const Vec2c point = o + u * s;
-  return RayHit<T>{rounded, point.template cast<T>(), h.exit_normal.template cast<T>()};
+  const Vec2c point = o + dir.u * s;
+  // The ray up to the exit's t stays in the shape.
+  return RayHit<T>{toward_zero<T>(t), point.template cast<T>(), h.exit_normal.template cast<T>()};
 }
 
 }  // namespace detail
