@@ -12,7 +12,6 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <tuple>
 
 namespace collide::detail {
 
@@ -261,51 +260,39 @@ inline CoreContact circle_contact_inside(const Vec2c& c, Calc r, const Vec2c& n,
   return out;
 }
 
-/// Where a circle's centre lies against a polygon with cached normals (at most 8 vertices) that
-/// circle_beyond_a_face() did not find apart (excesses: the ones it computed): the face it lies
-/// least deep behind or farthest beyond (face_of_largest_excess()); with the centre inside, that
-/// face is the reference face; outside, the closest point of the boundary, its feature and its
-/// distance. gap: the centre's excess inside, the distance less the radius outside, within band
-/// of the exact one. generic: rounding leaves these steps nothing to stand on (a tiny pair, a
-/// centre within the band of a face's line but projecting beyond its ends), and the generic path
-/// decides. The steps both contact_circle_polygon() and overlaps() take.
-struct CentreAgainstPolygon {
-  bool generic = false, inside = false;
-  unsigned face = 0;
-  Calc excess = 0, gap = 0, band = 0, dist = 0;
-  std::optional<CoreFeature> feature;
-  Vec2c on_q;
-};
+/// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
+/// did not find apart (excesses: the ones it computed), by the face the centre lies least deep
+/// behind or farthest beyond (face_of_largest_excess()): with the centre inside, that face is the
+/// reference face; outside, the closest point of the boundary. Kept out of line, so that
+/// circle_beyond_a_face() before it inlines into the caller.
 template <Scalar T>
-[[gnu::always_inline]] inline CentreAgainstPolygon centre_against_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
-                                                                          const Calc* excesses) {
+[[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
+                                                                    const Calc* excesses, Calc speculative) {
   const Vec2c* normals = PolygonAccess::normals(b);
   const std::size_t m = b.size();
   const Vec2c c = widen(a.center());
   const Calc r = a.radius(), own = std::max(c.cwiseAbs().maxCoeff(), r);
   const Calc scale = std::max(own, PolygonAccess::largest_coordinate(b));  // the pair's largest coordinate
-  CentreAgainstPolygon l;
-  if (!(scale >= kTinyCore)) {
-    l.generic = true;
-    return l;
-  }
-  std::tie(l.face, l.excess) = face_of_largest_excess(b, excesses, own);
-  l.band = band_of(scale);
-  if (!(l.excess > 0)) {
+  if (!(scale >= kTinyCore)) return contact_generic(a, b, speculative);
+  const auto [face, excess] = face_of_largest_excess(b, excesses, own);
+  const Calc band = band_of(scale);
+  const auto speculative_or_none = [&]() -> std::optional<CoreContact> {
+    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
+  };
+  if (!(excess > 0)) {
     // The centre inside (certain when inside by more than the band). Projecting beyond the face's
     // span, it lies behind a face that rounding tied with this one (or outside, past a vertex
     // sharper than the band): the faces decide.
-    l.inside = true;
-    l.generic = projects_beyond_face(b, c, l.face, l.band);
-    l.gap = l.excess;
-    return l;
+    if (projects_beyond_face(b, c, face, band)) return contact_generic(a, b, speculative);
+    if (!(excess < -band) && !decide_exactly(a, b)) return speculative_or_none();
+    return circle_contact_inside(c, r, normals[face], excess, face);
   }
-  l.feature = feature_beyond_face(b, c, l.face);
-  l.on_q = c - normals[l.face] * l.excess;
-  l.dist = l.excess;
-  if (!l.feature || !l.feature->edge) {
-    if (l.feature) {
-      l.on_q = widen(b[l.feature->index]);
+  std::optional<CoreFeature> feature = feature_beyond_face(b, c, face);
+  Vec2c on_q = c - normals[face] * excess;
+  Calc dist = excess;
+  if (!feature || !feature->edge) {
+    if (feature) {
+      on_q = widen(b[feature->index]);
     } else {
       std::array<Vec2c, ConvexPolygon<T>::kInline> v;
       for (std::size_t i = 0; i < m; ++i) v[i] = widen(b[i]);
@@ -313,40 +300,21 @@ template <Scalar T>
       // The three faces around first; the others too, since faces tied with this one up to
       // rounding (a run of tiny faces) may hide the closest face beyond them.
       closest_of_points_to_edges(cl, std::span<const Vec2c>(&c, 1), std::span<const Vec2c>(v.data(), m), false,
-                                 l.face + m - 1, m);
-      l.feature = cl.feature_q;
-      l.on_q = cl.on_q;
+                                 face + m - 1, m);
+      feature = cl.feature_q;
+      on_q = cl.on_q;
     }
-    l.dist = norm_of(l.on_q - c);
+    dist = norm_of(on_q - c);
   }
-  l.gap = l.dist - r;
-  return l;
-}
-
-/// Circle against a polygon with cached normals (at most 8 vertices) that circle_beyond_a_face()
-/// did not find apart (excesses: the ones it computed), from centre_against_polygon(). Kept out
-/// of line, so that circle_beyond_a_face() before it inlines into the caller.
-template <Scalar T>
-[[gnu::noinline]] std::optional<CoreContact> contact_circle_polygon(const Circle<T>& a, const ConvexPolygon<T>& b,
-                                                                    const Calc* excesses, Calc speculative) {
-  const CentreAgainstPolygon l = centre_against_polygon(a, b, excesses);
-  if (l.generic) return contact_generic(a, b, speculative);
-  // Clear of the band the steps decide, within it the exact decision: inside by the centre's depth.
-  const bool overlapping = l.inside ? l.excess < -l.band || decide_exactly(a, b)
-                                    : l.gap < -l.band || (!(l.gap > l.band) && decide_exactly(a, b));
-  if (!overlapping) {
-    return speculative > 0 ? speculative_contact_cores(core_of(a), core_of(b), speculative) : std::nullopt;
-  }
-  const Vec2c* normals = PolygonAccess::normals(b);
-  const Vec2c c = widen(a.center());
-  const Calc r = a.radius();
-  if (l.inside) return circle_contact_inside(c, r, normals[l.face], l.excess, l.face);
-  if (!(l.dist > l.band)) {
+  const Calc gap = dist - r;
+  const bool overlapping = gap < -band || (!(gap > band) && decide_exactly(a, b));
+  if (!overlapping) return speculative_or_none();
+  if (!(dist > band)) {
     // A gap at the level of rounding has no reliable direction: the faces decide (contact_cores).
     const Core pc = core_of(a), pb = core_of(b);
     return contact_from_axis(pc, pb, least_penetration(pc, pb), speculative);
   }
-  return circle_contact_from_closest(c, r, l.on_q, l.dist, *l.feature, normals[l.feature->index]);
+  return circle_contact_from_closest(c, r, on_q, dist, *feature, normals[feature->index]);
 }
 
 /// Whether the circle's centre lies beyond a face of the polygon (by its cached normals, which it

@@ -28,58 +28,45 @@
 
 namespace collide::detail {
 
-/// Whether two primitives in registry order are apart by more than `speculative` by a cheap test
-/// proven at every scale, with no exact step (false when it cannot tell): a float circle beyond a
-/// float box's face told in float; a circle beyond a box's face; a circle beyond a face of a
-/// polygon with cached normals (which leaves every face's excess in `excesses`, when given, for
-/// contact_circle_polygon()); two hulls whose rough boxes are apart. contact_pair() ends on it
-/// before computing anything, and overlaps() asks it before the exact decision.
+/// Whether two primitives in registry order are apart by a cheap test proven at every scale, with
+/// no exact step (false when it cannot tell), as contact_pair() tells them before computing
+/// anything: a circle beyond a face of an oriented box (told in float for float shapes); two hulls
+/// whose rough boxes are apart.
 template <class A, class B>
-bool apart_by_filter(const A& a, const B& b, Calc speculative, Calc* excesses = nullptr) noexcept {
+[[gnu::always_inline]] inline bool apart_by_filter(const A& a, const B& b) noexcept {
   using T = scalar_of_t<A>;
-  if constexpr (std::is_same_v<A, Circle<T>> && is_hull_kind_v<B> && !std::is_same_v<B, ConvexPolygon<T>>) {
-    // Float shapes without a speculative distance are told apart in float, at T's own precision.
+  if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, Obb<T>>) {
     if constexpr (std::is_same_v<T, float>) {
-      if (!(speculative > 0)) return circle_beyond_box_in_float(a, b);
+      return circle_beyond_box_in_float(a, b);
+    } else {
+      const Rect k = rect_of(b);
+      const Vec2c c = widen(a.center());
+      const Calc scale = rect_scale(c, a.radius(), k);
+      return scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, Calc(0), scale);
     }
-    const Rect k = rect_of(b);
-    const Vec2c c = widen(a.center());
-    const Calc scale = rect_scale(c, a.radius(), k);
-    return scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale);
-  } else if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, ConvexPolygon<T>>) {
-    if (!PolygonAccess::normals(b)) return false;
-    std::array<Calc, ConvexPolygon<T>::kInline> own;
-    return circle_beyond_a_face(a, b, speculative, excesses ? excesses : own.data());
   } else if constexpr (is_hull_kind_v<A> && is_hull_kind_v<B>) {
-    return apart_by_boxes(a, b, speculative);
+    return apart_by_boxes(a, b, Calc(0));
   } else {
     return false;
   }
 }
 
-/// overlap_pair() for a circle and a polygon with cached normals, or an oriented box, that
-/// apart_by_filter() did not find apart (excesses: the polygon's, as it computed them): the
-/// centre's steps of contact_circle_polygon() or contact_circle_rect() where they are clear of the
-/// band, the exact decision otherwise. Kept out of line, as the contact's steps are, so that the
-/// filter before it inlines into the caller.
-template <Scalar T, class B>
-[[gnu::noinline]] bool circle_overlaps_past_filter(const Circle<T>& a, const B& b, const Calc* excesses) {
-  if constexpr (std::is_same_v<B, ConvexPolygon<T>>) {
-    const CentreAgainstPolygon l = centre_against_polygon(a, b, excesses);
-    if (!l.generic && (l.gap < -l.band || l.gap > l.band)) return l.gap < -l.band;
-  } else {
-    // The centre in the box's frame: beyond a corner, beside a side, or inside (the gap is then
-    // its depth behind the nearest side).
-    const Vec2c c = widen(a.center());
-    const Rect k = rect_of(b);
-    const Calc scale = rect_scale(c, a.radius(), k);
-    if (scale >= kTinyCore && is_proper(b, k)) {
-      const CentreInRect f = centre_in_rect<false>(c, a.radius(), k, scale);
-      const Calc gap = f.ex > 0 && f.ey > 0   ? norm_of(offset_to_corner(f)) - f.r
-                       : f.ex > 0 || f.ey > 0 ? side_gap(f)
-                                              : std::max(f.ex, f.ey) * f.len;
-      if (gap < -f.band || gap > f.band) return gap < -f.band;
-    }
+/// overlap_pair() for a circle and an oriented box that apart_by_filter() did not find apart: the
+/// centre in the box's frame, as contact_circle_rect() takes it, where it is clear of the band
+/// (beyond a corner, beside a side, or inside, the gap then its depth behind the nearest side),
+/// the exact decision otherwise. Kept out of line, as the contact's steps are, so that the filter
+/// before it inlines into the caller.
+template <Scalar T>
+[[gnu::noinline]] bool circle_obb_past_filter(const Circle<T>& a, const Obb<T>& b) {
+  const Vec2c c = widen(a.center());
+  const Rect k = rect_of(b);
+  const Calc scale = rect_scale(c, a.radius(), k);
+  if (scale >= kTinyCore && is_proper(b, k)) {
+    const CentreInRect f = centre_in_rect<false>(c, a.radius(), k, scale);
+    const Calc gap = f.ex > 0 && f.ey > 0   ? norm_of(offset_to_corner(f)) - f.r
+                     : f.ex > 0 || f.ey > 0 ? side_gap(f)
+                                            : std::max(f.ex, f.ey) * f.len;
+    if (gap < -f.band || gap > f.band) return gap < -f.band;
   }
   return decide::pair(a, b);
 }
@@ -93,13 +80,16 @@ bool overlap_pair(const A& a, const B& b) {
   if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, ConvexPolygon<T>>) {
     if (PolygonAccess::normals(b)) {
       std::array<Calc, ConvexPolygon<T>::kInline> excesses;
-      if (circle_beyond_a_face(a, b, Calc(0), excesses.data())) return false;
-      return circle_overlaps_past_filter(a, b, excesses.data());
+      // The contact's own steps: they decide clear of the band and build one point at most.
+      return !circle_beyond_a_face(a, b, Calc(0), excesses.data()) &&
+             contact_circle_polygon(a, b, excesses.data(), Calc(0)).has_value();
     }
   } else if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, Obb<T>>) {
-    return !apart_by_filter(a, b, Calc(0)) && circle_overlaps_past_filter(a, b, nullptr);
+    return !apart_by_filter(a, b) && circle_obb_past_filter(a, b);
+  } else if constexpr ((std::is_same_v<A, Circle<T>> || std::is_same_v<A, Aabb<T>>)&&std::is_same_v<B, Aabb<T>>) {
+    return decide::pair(a, b);  // comparisons, or a clamp and a filtered distance: cheaper than a filter
   }
-  return !apart_by_filter(a, b, Calc(0)) && decide::pair(a, b);
+  return !apart_by_filter(a, b) && decide::pair(a, b);
 }
 
 /// The contact of two primitives in registry order (a's kind <= b's kind): present exactly when
@@ -116,16 +106,26 @@ std::optional<CoreContact> contact_pair(const A& a, const B& b, Calc speculative
   constexpr bool circle_a = std::is_same_v<A, Circle<scalar_of_t<A>>>;
   if constexpr ((circle_a || is_hull_kind_v<A>)&&is_hull_kind_v<B>) {
     if constexpr (circle_a && !std::is_same_v<B, ConvexPolygon<scalar_of_t<A>>>) {
-      if (apart_by_filter(a, b, speculative)) return std::nullopt;
+      // Float shapes without a speculative distance are told apart in float, at T's own precision.
+      if constexpr (std::is_same_v<scalar_of_t<A>, float>) {
+        if (!(speculative > 0)) {
+          if (circle_beyond_box_in_float(a, b)) return std::nullopt;
+          return contact_circle_rect(a, b, speculative);
+        }
+      }
+      const Rect k = rect_of(b);
+      const Vec2c c = widen(a.center());
+      const Calc scale = rect_scale(c, a.radius(), k);
+      if (scale >= kTinyCore && circle_beyond_rect(c, a.radius(), k, speculative, scale)) return std::nullopt;
       return contact_circle_rect(a, b, speculative);
     } else if constexpr (circle_a) {
       if (PolygonAccess::normals(b)) {
         std::array<Calc, ConvexPolygon<scalar_of_t<A>>::kInline> excesses;
-        if (apart_by_filter(a, b, speculative, excesses.data())) return std::nullopt;
+        if (circle_beyond_a_face(a, b, speculative, excesses.data())) return std::nullopt;
         return contact_circle_polygon(a, b, excesses.data(), speculative);
       }
     } else {
-      if (apart_by_filter(a, b, speculative)) return std::nullopt;
+      if (apart_by_boxes(a, b, speculative)) return std::nullopt;
       return contact_hulls(a, b, speculative, rounding);
     }
   } else if constexpr (circle_a && is_capsule_v<B>) {
