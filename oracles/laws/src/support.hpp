@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -26,6 +27,34 @@ using ::collide::laws::placed_primitives_of;
 using ::collide::laws::primitives_of;
 using ::collide::laws::turn;
 using ::collide::laws::turned;
+
+/// One law's verdict under construction: the first broken requirement is kept, with the inputs.
+struct Judgement {
+  Verdict v;
+  std::string context;
+
+  void require(bool holds, const std::string& expected, const std::string& got) {
+    if (holds || !v.ok) return;
+    v.ok = false;
+    v.expected = expected;
+    v.got = got;
+    v.account = "expected " + expected + "; got " + got + "; " + context;
+  }
+  void note(const std::string& s) { v.account += v.account.empty() ? s : "; " + s; }
+};
+
+/// Runs body on a Judgement; an exception (oracle or library) is a broken law, reported.
+template <class F>
+Verdict judged(const std::string& context, F&& body) {
+  Judgement j;
+  j.context = context;
+  try {
+    body(j);
+  } catch (const std::exception& e) {
+    j.require(false, "no exception", std::string("exception: ") + e.what());
+  }
+  return j.v;
+}
 
 /// Shortest decimal that round-trips, for accounts.
 inline std::string num(double v) {

@@ -17,6 +17,8 @@ namespace collide::laws {
 
 using detail::describe;
 using detail::documented_margin;
+using detail::judged;
+using detail::Judgement;
 using detail::num;
 using detail::placed_relation;
 using detail::placed_text;
@@ -26,34 +28,6 @@ using detail::vec;
 using detail::yes;
 
 namespace {
-
-/// One law's verdict under construction: the first broken requirement is kept.
-struct Judgement {
-  Verdict v;
-  std::string context;
-
-  void require(bool holds, const std::string& expected, const std::string& got) {
-    if (holds || !v.ok) return;
-    v.ok = false;
-    v.expected = expected;
-    v.got = got;
-    v.account = "expected " + expected + "; got " + got + "; " + context;
-  }
-  void note(const std::string& s) { v.account += v.account.empty() ? s : "; " + s; }
-};
-
-/// Runs body on a Judgement; an exception (oracle or library) is a broken law, reported.
-template <class F>
-Verdict judged(const std::string& context, F&& body) {
-  Judgement j;
-  j.context = context;
-  try {
-    body(j);
-  } catch (const std::exception& e) {
-    j.require(false, "no exception", std::string("exception: ") + e.what());
-  }
-  return j.v;
-}
 
 template <Scalar T>
 std::string pair_context(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const Transform<T>& xb) {

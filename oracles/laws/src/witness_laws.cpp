@@ -10,45 +10,15 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::judged;
+using detail::Judgement;
 using detail::num;
 using detail::vec;
 using detail::yes;
 
-namespace {
-
-/// One law's verdict under construction: the first broken rule is kept, with the inputs.
-struct Rules {
-  Verdict v;
-  std::string context;
-
-  void require(bool holds, const std::string& expected, const std::string& got) {
-    if (holds || !v.ok) return;
-    v.ok = false;
-    v.expected = expected;
-    v.got = got;
-    v.account = "expected " + expected + "; got " + got + "; " + context;
-  }
-  void note(const std::string& s) { v.account += v.account.empty() ? s : "; " + s; }
-};
-
-/// Runs body on Rules; an exception (oracle or library) is a broken law, reported.
-template <class F>
-Verdict judged(const std::string& context, F&& body) {
-  Rules r;
-  r.context = context;
-  try {
-    body(r);
-  } catch (const std::exception& e) {
-    r.require(false, "no exception", std::string("exception: ") + e.what());
-  }
-  return r.v;
-}
-
-}  // namespace
-
 template <Scalar T>
 Verdict signed_distance_law(const Shape<T>& s, const Vec2<T>& p) {
-  return judged("s = " + describe(s) + "; p = " + vec(p), [&](Rules& r) {
+  return judged("s = " + describe(s) + "; p = " + vec(p), [&](Judgement& r) {
     const auto require = [&](bool holds, const std::string& e, const std::string& g) { r.require(holds, e, g); };
     const T got = signed_distance(s, p);
     const bool in = contains(s, p);
@@ -85,7 +55,7 @@ Verdict signed_distance_law(const Shape<T>& s, const Vec2<T>& p) {
 
 template <Scalar T>
 Verdict closest_points_law(const Shape<T>& a, const Shape<T>& b) {
-  return judged("a = " + describe(a) + "; b = " + describe(b), [&](Rules& r) {
+  return judged("a = " + describe(a) + "; b = " + describe(b), [&](Judgement& r) {
     const auto require = [&](bool holds, const std::string& e, const std::string& g) { r.require(holds, e, g); };
     r.v.relation = relation(a, b);
     // Both argument orders, each judged on its own.
