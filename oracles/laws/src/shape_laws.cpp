@@ -244,15 +244,11 @@ template Verdict bounds_law<float>(const Shape<float>&);
 template Verdict bounds_law<double>(const Shape<double>&);
 template <Scalar T>
 Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
-  Verdict v;
-  auto fail = [&](std::string expected, std::string got) {
-    v.ok = false;
-    v.expected = std::move(expected);
-    v.got = std::move(got);
-    v.account = "expected " + v.expected + "; got " + v.got + "; s = " + describe(s) + "; ray " + vec(ray.origin) +
-                " + t " + vec(ray.direction) + ", max_t " + num(max_t);
-  };
-  try {
+  const std::string context =
+      "s = " + describe(s) + "; ray " + vec(ray.origin) + " + t " + vec(ray.direction) + ", max_t " + num(max_t);
+  return detail::judged(context, [&](detail::Judgement& r) {
+    Verdict& v = r.v;
+    const auto fail = [&](const std::string& expected, const std::string& got) { r.require(false, expected, got); };
     const Vec2c o = ray.origin.template cast<double>(), d = ray.direction.template cast<double>();
     const double len = d.norm();
     const double bound = raycast_exit_tolerance(s, ray);
@@ -263,11 +259,11 @@ Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
     if (!inside) {
       v.account = "origin outside or bad input";
       if (exit) fail("nothing (origin outside the shape, or bad input)", "exit t " + num(exit->t));
-      return v;
+      return;
     }
     if (!exit) {
       fail("an exit for an origin inside the shape", "nothing");
-      return v;
+      return;
     }
     const double t = exit->t;
     const Vec2c p = exit->point.template cast<double>();
@@ -275,22 +271,22 @@ Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
     v.account = "exit t " + num(t) + " at " + vec(exit->point) + " normal " + vec(exit->normal);
     if (!(t >= 0) || !(t <= double(max_t))) {
       fail("0 <= t <= max_t", "t " + num(t));
-      return v;
+      return;
     }
     if ((p - (o + d * t)).norm() >
         bound + (4 * detail::eps<T>() * t + double(std::numeric_limits<T>::denorm_min())) * len) {
       fail("point = origin + t * direction", "point " + vec(exit->point));
-      return v;
+      return;
     }
     const bool stays = n == Vec2c::Zero();
     if (stays && t != double(max_t)) {
       fail("normal (0, 0) only for a ray still inside at max_t", "t " + num(t) + " < max_t");
-      return v;
+      return;
     }
     // Inside up to the exit: the point itself (the segment, for a convex primitive) ...
     if (farther_than(s, p, bound)) {
       fail("the exit point within " + num(bound) + " of the shape", "point " + vec(exit->point));
-      return v;
+      return;
     }
     // ... and, for a compound, no gap: a gap begins where the ray leaves a child, which is where
     // that child is first met casting backward from the exit.
@@ -305,19 +301,19 @@ Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
         if (farther_than(s, q, bound)) {
           fail("no point of the ray before the exit farther than " + num(bound) + " from the shape",
                "the ray outside at " + vec(q) + " (t " + num(leaves) + ")");
-          return v;
+          return;
         }
       }
     }
-    if (stays) return v;
+    if (stays) return;
     // Not early: the exit point is not deep inside.
     if (deep_inside(s, p, bound)) {
       fail("the exit point within " + num(bound) + " of the boundary", "deeper than that inside");
-      return v;
+      return;
     }
     if (!(std::fabs(n.norm() - 1) <= 8 * detail::eps<T>())) {
       fail("a unit exit normal", "normal " + vec(exit->normal) + " (|n| = " + num(n.norm()) + ")");
-      return v;
+      return;
     }
     // The normal is judged where the ray really leaves: 4 bounds before the point it was deeper
     // than the bound inside.
@@ -325,17 +321,11 @@ Verdict raycast_exit_law(const Shape<T>& s, const Ray<T>& ray, T max_t) {
     const Vec2c u = dm / dm.norm();
     if (!deep_inside(s, Vec2c(p - u * (4 * bound)), bound)) {
       v.account += "; normal not judged (the ray runs within the bound of the boundary)";
-      return v;
+      return;
     }
     if (!outward_normal(s, p, n, bound))
       fail("the outward normal of the boundary at the exit", "normal " + vec(exit->normal));
-  } catch (const std::exception& e) {
-    v.ok = false;
-    v.expected = "no exception";
-    v.got = e.what();
-    v.account = std::string("exception: ") + e.what() + "; s = " + describe(s);
-  }
-  return v;
+  });
 }
 
 template Verdict raycast_law<float>(const Shape<float>&, const Ray<float>&, float);
