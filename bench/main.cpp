@@ -15,10 +15,11 @@ int main(int argc, char** argv) {
   const bool loop = bench::register_game_loop();
   const bool dist = bench::register_distance();
   const bool mass = bench::register_mass();
+  const bool chain = bench::register_chain();
 #if defined(COLLIDE_BENCH_CAST)
   bench::register_cast();
 #endif
-  if (!narrow || !broad || !loop || !dist || !mass) {
+  if (!narrow || !broad || !loop || !dist || !mass || !chain) {
     std::fprintf(stderr, "cross-check FAILED: collide and its peers disagree; nothing was timed\n");
     return 1;
   }

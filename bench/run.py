@@ -154,6 +154,14 @@ def main():
             row["signed_distance_ratio"] = ratio(row["signed_distance_ns"], row["box2d_distance_ns"])
             row["contains_ratio"] = ratio(row["contains_ns"], row["box2d_test_point_ns"])
             points.append(row)
+    # Chains: contact(segment, shape) against Box2D's one-sided edge with ghost vertices and its
+    # world manifold, per pair of the same terrain.
+    chains = []
+    for name in sorted(m):
+        parts = name.split("/")
+        if parts[0] == "chain" and parts[2] == "collide":
+            b2 = m.get("chain/%s/box2d" % parts[1])
+            chains.append({"kind": parts[1], "collide_ns": m[name], "box2d_ns": b2, "ratio": ratio(m[name], b2)})
     sizes = sorted({int(n.split("/")[3]) for n in m if n.startswith("broadphase/")})
     for n in sizes:
         for op in ("build", "pairs", "move10"):
@@ -241,6 +249,12 @@ def main():
             [[r["kind"], r["set"]] + [fmt(r[k]) for k in (
                 "signed_distance_ns", "box2d_distance_ns", "signed_distance_ratio", "contains_ns",
                 "box2d_test_point_ns", "contains_ratio")] for r in points], right=set(range(2, 8)))
+    if chains:
+        print("\nChains (ns per pair; ratio = collide contact(segment, shape) / Box2D b2CollideEdgeAnd* with"
+              " b2WorldManifold, one-sided edges with ghost vertices)")
+        collide_tools.print_table(["shape", "collide", "box2d", "ratio"],
+                                  [[r["kind"]] + [fmt(r[k]) for k in ("collide_ns", "box2d_ns", "ratio")]
+                                   for r in chains], right={1, 2, 3})
     print("\nBroadphase (ns per box; speedup = Box2D tree / collide, > 1 is faster; batch = tree add_batch)")
     collide_tools.print_table(
         ["N", "op", "tree", "sweep", "grid", "box2dTree", "brute", "xTree", "xSweep", "xGrid", "batch", "xBatch"],
@@ -282,6 +296,10 @@ def main():
             value = r["collide_ns"] / r["collide_contact_ns"]
             goals.append({"goal": "%s/%s overlaps() <= contact()" % (r["pair"], r["set"]),
                           "value": round(value, 2), "met": value <= 1.0})
+    for r in chains:
+        if r["ratio"] is not None:
+            goals.append({"goal": "chain/%s contact() <= Box2D edge manifold" % r["kind"], "value": r["ratio"],
+                          "met": r["ratio"] <= 1.0})
     for r in loops:
         for phase, what, limit in LOOP_GOALS:
             if r[phase + "_ratio"] is not None:
@@ -320,7 +338,7 @@ def main():
     out = {"repetitions": args.repetitions, "min_time_s": args.min_time, "statistic": "median",
            "note": "shared 2-core machine: figures are noisy; ratios come from the same run",
            "context": raw.get("context", {}), "cross_checks": checks, "pairs": pairs, "broadphase": broad,
-           "broadphase_events": events, "game_loop": loops, "distances": distances, "points": points,
+           "broadphase_events": events, "game_loop": loops, "distances": distances, "points": points, "chains": chains,
            "goals": goals}
     path = os.path.join(reports, "bench.json")
     with open(path, "w") as f:

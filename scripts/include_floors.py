@@ -33,8 +33,8 @@ FLOORS = {
          "detail/witness.hpp"]),
     5: ("placement: shapes and compounds posed by transforms, and the queries on them",
         ["transformed.hpp", "detail/placement.hpp"]),
-    6: ("casts, the world and the umbrella headers",
-        ["cast.hpp", "time_of_impact.hpp", "detail/advance*.hpp", "broadphase/*.hpp", "broadphase.hpp",
+    6: ("casts, chains, the world and the umbrella headers",
+        ["cast.hpp", "time_of_impact.hpp", "detail/advance*.hpp", "chain.hpp", "broadphase/*.hpp", "broadphase.hpp",
          "collide.hpp", "compiled.hpp"]),
 }
 

@@ -23,4 +23,5 @@
 #include "collide/transform.hpp"
 #include "collide/transformed.hpp"
 #include "collide/cast.hpp"
+#include "collide/chain.hpp"
 #include "collide/time_of_impact.hpp"

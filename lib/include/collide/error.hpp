@@ -23,7 +23,7 @@ enum class Error : std::uint8_t {
   NegativeExtent,     ///< OBB half extent < 0
   MinGreaterThanMax,  ///< AABB min exceeds max on an axis (index() names the axis: 0 = x, 1 = y)
   ZeroAxis,           ///< OBB rotation given as a zero vector
-  TooFewVertices,     ///< fewer than 3 distinct polygon vertices
+  TooFewVertices,     ///< fewer than 3 distinct polygon vertices, or too few chain points (chain.hpp)
   Collinear,          ///< all polygon vertices lie on one line: the polygon has no area
   NonConvex,          ///< polygon turns the wrong way, doubles back or winds more than once at index()
   NotARectangle,      ///< four corners given to an OBB do not form a rectangle
@@ -31,6 +31,8 @@ enum class Error : std::uint8_t {
   ZeroRotation,       ///< a transform's rotation given as the zero vector
   NegativeDensity,    ///< mass_properties() given a density < 0
   CompoundOuter,      ///< contains(outer, inner) given a compound outer: containment in a union is not decided
+  ZeroLengthSegment,  ///< two consecutive chain points coincide
+  FoldedChain,        ///< a chain turns straight back on itself at index()
 };
 
 /// Stable name of an error, e.g. "NonConvex".
@@ -64,6 +66,10 @@ constexpr std::string_view name(Error e) noexcept {
       return "NegativeDensity";
     case Error::CompoundOuter:
       return "CompoundOuter";
+    case Error::ZeroLengthSegment:
+      return "ZeroLengthSegment";
+    case Error::FoldedChain:
+      return "FoldedChain";
   }
   return "Unknown";
 }

@@ -32,7 +32,8 @@ enum class BroadphaseErrc : std::uint8_t {
   BadRay,          ///< ray origin/direction/length is NaN or infinite, or the length is negative
   TooManyProxies,  ///< more than 2^32 - 2 live proxies
   BadPair,         ///< a candidate pair names a shape beyond its list, or the lists differ in length
-  Reentered        ///< a Narrowphase called from the callback of its own running batch
+  Reentered,       ///< a Narrowphase called from the callback of its own running batch
+  ChainMoved       ///< a World's chain segment body given a transform: chain segments stay where they were added
 };
 
 /// Stable name of a broadphase error, e.g. "InvalidProxy".
@@ -54,6 +55,8 @@ constexpr std::string_view name(BroadphaseErrc e) noexcept {
       return "BadPair";
     case BroadphaseErrc::Reentered:
       return "Reentered";
+    case BroadphaseErrc::ChainMoved:
+      return "ChainMoved";
   }
   return "Unknown";
 }

@@ -8,6 +8,7 @@
 #include "collide/broadphase/events.hpp"
 #include "collide/broadphase/pair_map.hpp"
 #include "collide/broadphase/tree.hpp"
+#include "collide/chain.hpp"
 #include "collide/contains.hpp"
 #include "collide/contact.hpp"
 #include "collide/overlaps.hpp"
@@ -185,14 +186,21 @@ struct BodyContact {
 /// overlap_tolerance(a, xa, b, xb), exact for identities), or with a speculative distance d > 0,
 /// lie within d of each other. step() computes the contact of every pair of bodies of which one
 /// changed, keeps the others, and reports the pairs whose contact began or ended since the last
-/// step, each once; filters apply (`accepts`). Every contact is contact() bit for bit, with its
-/// error contract and feature ids, and keeps its ContactId while it lasts. Work per step is
-/// proportional to the bodies changed and their broadphase partners.
+/// step, each once; filters apply (`accepts`). Every contact is contact() bit for bit (a chain
+/// segment's: the chain's contact(), below), with its error contract and feature ids, and keeps
+/// its ContactId while it lasts. Work per step is proportional to the bodies changed and their
+/// broadphase partners.
 ///
 /// Queries by point, by any shape and by ray run against the placed shapes at any time. They are
 /// total, as contains() and raycast() are: a point or a ray with a NaN or an infinite value, or a
 /// negative or NaN max_t, meets no body. Stored input is checked: a bad handle is InvalidProxy, a
 /// bad speculative distance BadMargin.
+///
+/// Chains. A chain segment (add(ChainSegment) or add(Chain), one body per segment) is a body in
+/// world space whose contacts follow the chain's rules (chain.hpp: one-sided, no ghost normals at
+/// its joints); two segments never touch. Its shape is the two-sided segment (a capsule of radius
+/// 0), which the queries and the mover meet. It stays where it was added: move(id, x) on it is
+/// ChainMoved; set_shape() makes it an ordinary body.
 ///
 /// The broadphase indexes each body by bounds(shape, x), padded by the speculative distance and by
 /// the rounding of a ray's hit, so that it proposes every pair and every body the queries can
@@ -219,6 +227,8 @@ class World {
     grow(id.index);
     shapes_[id.index] = shape;
     transforms_[id.index] = x;
+    segments_[id.index].reset();
+    has_segment_[id.index] = 0;
     mark(id);
     return id;
   }
@@ -226,9 +236,26 @@ class World {
   ProxyId add(const Shape<T>& shape, std::uint64_t user = 0, Filter filter = {}) {
     return add(shape, Transform<T>(), user, filter);
   }
+  /// Adds a chain segment body (see the class), in world space. Returns its handle.
+  ProxyId add(const ChainSegment<T>& segment, std::uint64_t user = 0, Filter filter = {}) {
+    const ProxyId id = add(Shape<T>(segment.as_capsule()), Transform<T>(), user, filter);
+    segments_[id.index] = segment;
+    has_segment_[id.index] = 1;
+    return id;
+  }
+  /// Adds every segment of a chain as a body (add(ChainSegment)), all with the same user data and
+  /// filter. Returns their handles in segment order.
+  std::vector<ProxyId> add(const Chain<T>& chain, std::uint64_t user = 0, Filter filter = {}) {
+    std::vector<ProxyId> ids;
+    ids.reserve(chain.size());
+    for (std::size_t i = 0; i < chain.size(); ++i) ids.push_back(add(chain.segment(i), user, filter));
+    return ids;
+  }
   /// Places a body by a new transform. Allocates nothing once the world's buffers have grown.
-  /// Errors: InvalidProxy.
+  /// Errors: InvalidProxy, ChainMoved (a chain segment body).
   void move(ProxyId id, const Transform<T>& x) {
+    if (has_segment_[checked(id)])
+      throw BroadphaseError(BroadphaseErrc::ChainMoved, "a chain segment stays where it was added");
     tracker_.move(id, body_box(*shapes_[checked(id)], x));
     transforms_[id.index] = x;
     mark(id);
@@ -241,6 +268,8 @@ class World {
     tracker_.move(id, body_box(shape, x));
     shapes_[id.index] = shape;
     transforms_[id.index] = x;
+    segments_[id.index].reset();
+    has_segment_[id.index] = 0;
     mark(id);
   }
   /// Replaces a body's filter. Errors: InvalidProxy.
@@ -252,6 +281,8 @@ class World {
   void remove(ProxyId id) {
     tracker_.remove(id);
     shapes_[id.index].reset();
+    segments_[id.index].reset();
+    has_segment_[id.index] = 0;
   }
   /// True when id names a live body.
   bool contains(ProxyId id) const noexcept { return tracker_.structure().contains(id); }
@@ -259,6 +290,11 @@ class World {
   std::size_t size() const noexcept { return tracker_.structure().size(); }
   /// The body's shape, in its own frame. Errors: InvalidProxy.
   const Shape<T>& shape(ProxyId id) const { return *shapes_[checked(id)]; }
+  /// The body's chain segment, or nullptr for a body that is not one. Errors: InvalidProxy.
+  const ChainSegment<T>* chain_segment(ProxyId id) const {
+    const std::optional<ChainSegment<T>>& s = segments_[checked(id)];
+    return s ? &*s : nullptr;
+  }
   /// The body's transform. Errors: InvalidProxy.
   const Transform<T>& transform(ProxyId id) const { return transforms_[checked(id)]; }
   /// Errors: InvalidProxy.
@@ -395,7 +431,7 @@ class World {
   /// Computes the contact of pair p (both bodies live) and records what began, ended or changed.
   void settle(const ProxyPair& p) {
     const std::uint32_t a = p.a.index, b = p.b.index;
-    const std::optional<Contact<T>> c = contact(*shapes_[a], transforms_[a], *shapes_[b], transforms_[b], speculative_);
+    const std::optional<Contact<T>> c = body_contact(a, b);
     const std::uint64_t k = detail::pair_key(a, b);
     if (std::uint32_t* slot = by_pair_.find(k)) {
       if (c) {
@@ -424,6 +460,16 @@ class World {
     events_.began.push_back(p);
   }
 
+  /// The contact of the bodies in slots a and b, normal from a toward b: by the chain's rules when
+  /// one is a chain segment, none between two segments.
+  std::optional<Contact<T>> body_contact(std::uint32_t a, std::uint32_t b) const {
+    if (!(has_segment_[a] | has_segment_[b])) [[likely]]
+      return contact(*shapes_[a], transforms_[a], *shapes_[b], transforms_[b], speculative_);
+    if (has_segment_[a] && has_segment_[b]) return std::nullopt;
+    if (has_segment_[a]) return detail::chain_contact_as(*segments_[a], *shapes_[b], transforms_[b], speculative_);
+    return detail::chain_contact_as(*segments_[b], *shapes_[a], transforms_[a], speculative_, true);
+  }
+
   /// Ends pair p's contact, if it has one: its slot is freed for a later contact.
   void end_contact(const ProxyPair& p) {
     std::uint32_t slot = 0;
@@ -439,6 +485,8 @@ class World {
     if (i >= shapes_.size()) {
       shapes_.resize(std::size_t(i) + 1);
       transforms_.resize(std::size_t(i) + 1);
+      segments_.resize(std::size_t(i) + 1);
+      has_segment_.resize(std::size_t(i) + 1, 0);
       ids_.resize(std::size_t(i) + 1);
       changed_mark_.resize(std::size_t(i) + 1, 0);
     }
@@ -454,10 +502,12 @@ class World {
 
   PairTracker<BP, T> tracker_;
   T speculative_;
-  std::vector<std::optional<Shape<T>>> shapes_;  ///< per slot: the body's shape in its frame
-  std::vector<Transform<T>> transforms_;         ///< per slot: the body's transform
-  std::vector<ProxyId> ids_;                     ///< per slot: the current handle
-  std::vector<std::uint32_t> changed_;           ///< slots added, moved or re-filtered since the last step
+  std::vector<std::optional<Shape<T>>> shapes_;           ///< per slot: the body's shape in its frame
+  std::vector<Transform<T>> transforms_;                  ///< per slot: the body's transform
+  std::vector<std::optional<ChainSegment<T>>> segments_;  ///< per slot: the chain segment it is, if any
+  std::vector<char> has_segment_;       ///< per slot: segments_[i] holds one (read for every pair: one byte)
+  std::vector<ProxyId> ids_;            ///< per slot: the current handle
+  std::vector<std::uint32_t> changed_;  ///< slots added, moved or re-filtered since the last step
   std::vector<char> changed_mark_;
   std::vector<Record> contacts_;     ///< contact slots
   std::vector<std::uint32_t> free_;  ///< contact slots not in use

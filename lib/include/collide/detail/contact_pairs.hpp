@@ -86,8 +86,15 @@ bool overlap_pair(const A& a, const B& b) {
     }
   } else if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, Obb<T>>) {
     return !apart_by_filter(a, b) && circle_obb_past_filter(a, b);
-  } else if constexpr ((std::is_same_v<A, Circle<T>> || std::is_same_v<A, Aabb<T>>)&&std::is_same_v<B, Aabb<T>>) {
-    return decide::pair(a, b);  // comparisons, or a clamp and a filtered distance: cheaper than a filter
+  } else if constexpr (std::is_same_v<A, Circle<T>> && std::is_same_v<B, Aabb<T>>) {
+    // Float pairs apart are told in float first, as contact() tells them; the decision is a clamp
+    // and a filtered distance.
+    if constexpr (std::is_same_v<T, float>) {
+      if (circle_beyond_box_in_float(a, b)) return false;
+    }
+    return decide::pair(a, b);
+  } else if constexpr (std::is_same_v<A, Aabb<T>> && std::is_same_v<B, Aabb<T>>) {
+    return decide::pair(a, b);  // four comparisons
   }
   return !apart_by_filter(a, b) && decide::pair(a, b);
 }
