@@ -102,10 +102,18 @@ void box2d_collide(b2Manifold* m, const b2EdgeShape& e, const b2CircleShape& s) 
 void box2d_collide(b2Manifold* m, const b2EdgeShape& e, const b2PolygonShape& s) {
   b2CollideEdgeAndPolygon(m, &e, b2Transform(b2Vec2(0, 0), b2Rot(0)), &s, b2Transform(b2Vec2(0, 0), b2Rot(0)));
 }
-const b2CircleShape& box2d_shape(const CircleIn& s) { return s.b; }
-const b2PolygonShape& box2d_shape(const HullIn& s) { return s.b; }
-float box2d_radius(const CircleIn& s) { return s.b.m_radius; }
-float box2d_radius(const HullIn&) { return 0; }
+const b2CircleShape& box2d_shape(const CircleIn& s) {
+  return s.b;
+}
+const b2PolygonShape& box2d_shape(const HullIn& s) {
+  return s.b;
+}
+float box2d_radius(const CircleIn& s) {
+  return s.b.m_radius;
+}
+float box2d_radius(const HullIn&) {
+  return 0;
+}
 
 /// Whether every point of the shape's core lies over the middle 90 % of the segment.
 template <class In>
@@ -142,7 +150,7 @@ bool cross_check(const char* kind, const Terrain& t, const std::vector<ChainPair
       return false;
     }
   }
-  std::fprintf(stderr, "check chain/%s: %zu of %zu pairs judged against Box2D: OK\n", kind, judged, pairs.size());
+  std::printf("check chain/%s: %zu of %zu pairs judged against Box2D: OK\n", kind, judged, pairs.size());
   return judged >= 50;  // a check that judged few pairs proves little
 }
 

@@ -1,7 +1,8 @@
 /// The laws of chain contacts (collide/chain.hpp), for both scalars: one GoogleTest test per law
 /// and scalar (suite ChainLaws), checked by RapidCheck on random chains (open and loops, flat runs
 /// with bumps and free zigzags) against every primitive kind, in world space or placed by a
-/// transform, with and without a speculative distance. Each law is a plain function of one segment's answer, returning what failed:
+/// transform, with and without a speculative distance. Each law is a plain function of one segment's answer, returning
+/// what failed:
 /// 1. admissible: the normal is the segment's front normal n, or lies inside the corner arc the
 ///    segment owns (exact orient() for the turn), up to T's rounding of a unit vector;
 /// 2. one_sided: a shape whose reference point lies behind the front gets no contact;
@@ -127,7 +128,9 @@ double normal_tolerance() {
   return 64 * double(std::numeric_limits<T>::epsilon());
 }
 
-double cross(const Vec2c& p, const Vec2c& q) { return p.x() * q.y() - p.y() * q.x(); }
+double cross(const Vec2c& p, const Vec2c& q) {
+  return p.x() * q.y() - p.y() * q.x();
+}
 
 /// The core (feature numbering) and radius of the shape as the chain's contact meets it.
 template <Scalar T>
@@ -136,7 +139,9 @@ template <Scalar T>
 }
 
 /// Whether normal m is the face normal (up to rounding).
-bool is_face_normal(const Frame& f, const Vec2c& m, double tol) { return (m - f.n).norm() <= tol; }
+bool is_face_normal(const Frame& f, const Vec2c& m, double tol) {
+  return (m - f.n).norm() <= tol;
+}
 
 // --- the laws --------------------------------------------------------------------------------------
 
@@ -191,7 +196,8 @@ std::optional<std::string> present_when_near(const Case<T>& k, const ChainSegmen
 template <Scalar T>
 bool is_two_sided(const Case<T>& k, const ChainSegment<T>& seg, const Contact<T>& c) {
   const std::optional<::collide::detail::CoreContact> core = with_met_shape(k, [&](const auto& s) {
-    return ::collide::detail::contact_primitives(seg.as_capsule(), s, ::collide::detail::speculative_distance(k.speculative));
+    return ::collide::detail::contact_primitives(seg.as_capsule(), s,
+                                                 ::collide::detail::speculative_distance(k.speculative));
   });
   std::optional<Contact<T>> two;
   if (core) ::collide::detail::round_into(*core, two);
@@ -277,8 +283,11 @@ std::string account(const Case<T>& k, std::size_t i, const std::optional<Contact
   o << (k.chain.loop() ? "loop" : "open chain") << " segment " << i << " (" << seg.before().transpose() << ") ("
     << seg.a().transpose() << ") -> (" << seg.b().transpose() << ") (" << seg.after().transpose() << "); shape "
     << name(kind(k.shape)) << " ";
-  std::visit([&](const auto& s) { o << "bounds (" << bounds(s).min().transpose() << ") (" << bounds(s).max().transpose() << ")"; },
-             k.shape);
+  std::visit(
+      [&](const auto& s) {
+        o << "bounds (" << bounds(s).min().transpose() << ") (" << bounds(s).max().transpose() << ")";
+      },
+      k.shape);
   o << " placed at (" << k.x.position().transpose() << ") turned (" << k.x.rotation().transpose() << "); speculative "
     << k.speculative << "; ";
   if (c) {
@@ -316,18 +325,42 @@ void check_contacts(Law law) {
 
 }  // namespace
 
-RC_GTEST_PROP(ChainLaws, admissible_float, ()) { check_contacts<float>(admissible<float>); }
-RC_GTEST_PROP(ChainLaws, admissible_double, ()) { check_contacts<double>(admissible<double>); }
-RC_GTEST_PROP(ChainLaws, one_sided_float, ()) { check<float>(one_sided<float>); }
-RC_GTEST_PROP(ChainLaws, one_sided_double, ()) { check<double>(one_sided<double>); }
-RC_GTEST_PROP(ChainLaws, surfaces_float, ()) { check_contacts<float>(surfaces<float>); }
-RC_GTEST_PROP(ChainLaws, surfaces_double, ()) { check_contacts<double>(surfaces<double>); }
-RC_GTEST_PROP(ChainLaws, present_when_near_float, ()) { check_contacts<float>(present_when_near<float>); }
-RC_GTEST_PROP(ChainLaws, present_when_near_double, ()) { check_contacts<double>(present_when_near<double>); }
-RC_GTEST_PROP(ChainLaws, face_complete_float, ()) { check<float>(face_complete<float>); }
-RC_GTEST_PROP(ChainLaws, face_complete_double, ()) { check<double>(face_complete<double>); }
-RC_GTEST_PROP(ChainLaws, face_ids_float, ()) { check_contacts<float>(face_ids<float>); }
-RC_GTEST_PROP(ChainLaws, face_ids_double, ()) { check_contacts<double>(face_ids<double>); }
+RC_GTEST_PROP(ChainLaws, admissible_float, ()) {
+  check_contacts<float>(admissible<float>);
+}
+RC_GTEST_PROP(ChainLaws, admissible_double, ()) {
+  check_contacts<double>(admissible<double>);
+}
+RC_GTEST_PROP(ChainLaws, one_sided_float, ()) {
+  check<float>(one_sided<float>);
+}
+RC_GTEST_PROP(ChainLaws, one_sided_double, ()) {
+  check<double>(one_sided<double>);
+}
+RC_GTEST_PROP(ChainLaws, surfaces_float, ()) {
+  check_contacts<float>(surfaces<float>);
+}
+RC_GTEST_PROP(ChainLaws, surfaces_double, ()) {
+  check_contacts<double>(surfaces<double>);
+}
+RC_GTEST_PROP(ChainLaws, present_when_near_float, ()) {
+  check_contacts<float>(present_when_near<float>);
+}
+RC_GTEST_PROP(ChainLaws, present_when_near_double, ()) {
+  check_contacts<double>(present_when_near<double>);
+}
+RC_GTEST_PROP(ChainLaws, face_complete_float, ()) {
+  check<float>(face_complete<float>);
+}
+RC_GTEST_PROP(ChainLaws, face_complete_double, ()) {
+  check<double>(face_complete<double>);
+}
+RC_GTEST_PROP(ChainLaws, face_ids_float, ()) {
+  check_contacts<float>(face_ids<float>);
+}
+RC_GTEST_PROP(ChainLaws, face_ids_double, ()) {
+  check_contacts<double>(face_ids<double>);
+}
 
 }  // namespace collide::props
 
@@ -336,8 +369,9 @@ int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   const int failed = RUN_ALL_TESTS();
   const collide::props::Stats& s = collide::props::g_stats;
-  std::printf("chain laws judged %ld segments: %ld face contacts, %ld corner contacts, %ld shapes behind, %ld "
-              "completeness claims\n",
-              s.segments, s.face, s.corner, s.behind, s.completeness);
+  std::printf(
+      "chain laws judged %ld segments: %ld face contacts, %ld corner contacts, %ld shapes behind, %ld "
+      "completeness claims\n",
+      s.segments, s.face, s.corner, s.behind, s.completeness);
   return failed;
 }

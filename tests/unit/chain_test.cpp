@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -100,6 +101,43 @@ TYPED_TEST(Chains, FrontFaceContact) {
   ASSERT_TRUE(spec);
   EXPECT_NEAR(double(spec->separations[0]), 0.5, 1e-6);
   EXPECT_EQ(spec->depth, T(0));
+}
+
+TYPED_TEST(Chains, CapsuleMeetsTheFrontWithItsSide) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const ChainSegment<T> floor(V(3, 0), V(2, 0), V(-2, 0), V(-3, 0));
+  // A capsule lying flat, sunk 0.05: its bottom side gives two points, one under each end, each
+  // naming the end it comes from; a point from its top side would float 0.45 above the floor.
+  const auto c = contact(floor, Capsule<T>(V(-1, T(0.2)), V(1, T(0.2)), T(0.25)));
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->count, 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(double(c->separations[i]), -0.05, 1e-6);
+    EXPECT_NEAR(double(c->points[i].y()), -0.025, 1e-6);
+    EXPECT_NEAR(double(c->points[i].x()), i == 0 ? -1.0 : 1.0, 1e-6);
+    EXPECT_EQ(c->ids[i].index_b, i);
+  }
+}
+
+TYPED_TEST(Chains, TiltedCapsulePointsLieOnItsSurface) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  // The laws' counterexample of a first version, which pushed the capsule's core points straight
+  // down by its radius: for a tilted capsule those lie inside it, not on its surface. Each point's
+  // end on the capsule (point + normal * separation / 2) must lie one radius from its core.
+  const ChainSegment<T> floor(V(3, 0), V(2, 0), V(-2, 0), V(-3, 0));
+  const Capsule<T> tilted(V(-1, T(0.2)), V(1, T(0.6)), T(0.25));
+  const auto c = contact(floor, tilted, T(1));  // within reach: the far end's point is kept too
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->count, 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Vec2c on_shape = widen(c->points[i]) + widen(c->normal) * (double(c->separations[i]) / 2);
+    const Vec2c a = widen(tilted.a()), d = widen(tilted.b()) - a;
+    const double t = std::clamp((on_shape - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    EXPECT_NEAR((a + d * t - on_shape).norm(), 0.25, 1e-5) << "point " << i;
+  }
+  EXPECT_NEAR(double(c->depth), 0.05, 1e-5);  // its lowest point, under the lower end
 }
 
 TYPED_TEST(Chains, SpeculativeContactsAlongTheChain) {
@@ -205,7 +243,9 @@ TYPED_TEST(Chains, SlidingOverTilesGivesNoGhostNormals) {
   const auto obb = [](T x, T bottom) {
     return Obb<T>::make_with_axis(V(x, bottom + T(0.25)), V(T(0.5), T(0.25)), V(1, 0)).value();
   };
-  const auto capsule = [](T x, T bottom) { return Capsule<T>(V(x - T(0.4), bottom + T(0.3)), V(x + T(0.4), bottom + T(0.3)), T(0.3)); };
+  const auto capsule = [](T x, T bottom) {
+    return Capsule<T>(V(x - T(0.4), bottom + T(0.3)), V(x + T(0.4), bottom + T(0.3)), T(0.3));
+  };
   const auto circle = [](T x, T bottom) { return Circle<T>(V(x, bottom + T(0.5)), T(0.5)); };
   const auto on_chain = [&](const auto& s, const auto& report) {
     for_each_contact(floor, s, T(0), [&](std::size_t, const Contact<T>& c) { report(c); });
@@ -219,9 +259,10 @@ TYPED_TEST(Chains, SlidingOverTilesGivesNoGhostNormals) {
   const double chain_obb = ghost_share<T>(obb, on_chain), tiles_obb = ghost_share<T>(obb, on_tiles);
   const double chain_capsule = ghost_share<T>(capsule, on_chain), tiles_capsule = ghost_share<T>(capsule, on_tiles);
   const double chain_circle = ghost_share<T>(circle, on_chain);
-  std::printf("ghost normals, chain / separate tiles: box %.3f / %.3f, obb %.3f / %.3f, capsule %.3f / %.3f, "
-              "circle %.3f\n",
-              chain_box, tiles_box, chain_obb, tiles_obb, chain_capsule, tiles_capsule, chain_circle);
+  std::printf(
+      "ghost normals, chain / separate tiles: box %.3f / %.3f, obb %.3f / %.3f, capsule %.3f / %.3f, "
+      "circle %.3f\n",
+      chain_box, tiles_box, chain_obb, tiles_obb, chain_capsule, tiles_capsule, chain_circle);
   EXPECT_EQ(chain_box, 0);
   EXPECT_EQ(chain_obb, 0);
   EXPECT_EQ(chain_capsule, 0);
@@ -329,7 +370,8 @@ TYPED_TEST(Chains, WorldChainAddedFirstAndCompoundBodies) {
   });
   EXPECT_GE(contacts, 1);
   // The same body placed by the transform meets the chain's own contact() in world space.
-  const auto direct = contact(tile_floor<T>().segment(14), pair, Transform<T>::make_with_rotation(V(T(5.5), T(0.45)), V(0, 1)).value());
+  const auto direct =
+      contact(tile_floor<T>().segment(14), pair, Transform<T>::make_with_rotation(V(T(5.5), T(0.45)), V(0, 1)).value());
   ASSERT_TRUE(direct);
   EXPECT_TRUE(is_up(direct->normal));
 }

@@ -128,11 +128,13 @@ class Chain {
     const std::size_t n = points.size();
     ShapeError e = detail::placeholder_error();
     for (std::size_t i = 0; i < n; ++i) {
-      if (!detail::check_value(points[i].x(), long(2 * i), &e) || !detail::check_value(points[i].y(), long(2 * i + 1), &e))
+      if (!detail::check_value(points[i].x(), long(2 * i), &e) ||
+          !detail::check_value(points[i].y(), long(2 * i + 1), &e))
         return e;
     }
     if (n < (loop ? 3u : 4u))
-      return ShapeError(Error::TooFewVertices, -1, loop ? "a chain loop needs 3 points" : "an open chain needs 4 points");
+      return ShapeError(Error::TooFewVertices, -1,
+                        loop ? "a chain loop needs 3 points" : "an open chain needs 4 points");
     const std::size_t joints = loop ? n : n - 1;
     for (std::size_t i = 0; i < joints; ++i) {
       if (points[i] == points[(i + 1) % n])
@@ -181,7 +183,9 @@ inline SegmentFrame segment_frame(const Vec2c& a, const Vec2c& b) noexcept {
   const Vec2c u = d / len;
   return {a, u, Vec2c(u.y(), -u.x()), len};
 }
-inline Calc cross2(const Vec2c& p, const Vec2c& q) noexcept { return p.x() * q.y() - p.y() * q.x(); }
+inline Calc cross2(const Vec2c& p, const Vec2c& q) noexcept {
+  return p.x() * q.y() - p.y() * q.x();
+}
 
 /// Whether normal m lies strictly inside a corner arc the segment owns: at b when the chain turns
 /// left there (from n to the next segment's normal), at a when it owns that corner and turns left
@@ -232,8 +236,7 @@ Vec2c reference_point(const B& s) noexcept {
 ///     within the strip
 ///   keep the points within reach, midway between the surfaces
 template <class Vertex>
-std::optional<CoreContact> face_contact(const SegmentFrame& f, std::size_t n, Vertex vertex, Calc r,
-                                        Calc speculative) {
+std::optional<CoreContact> face_contact(const SegmentFrame& f, std::size_t n, Vertex vertex, Calc r, Calc speculative) {
   const auto height = [&](const Vec2c& p) { return f.n.dot(p - f.a); };
   const auto along = [&](const Vec2c& p) { return f.u.dot(p - f.a); };
   const auto in_strip = [&](const Vec2c& p) {
@@ -317,7 +320,8 @@ std::optional<CoreContact> face_contact(const SegmentFrame& f, std::size_t n, Ve
         const Calc tp = along(p), tq = along(q);
         if (in_strip(p)) consider(p, i);
         for (const Calc bound : {Calc(0), f.length}) {
-          if ((tp < bound) != (tq < bound)) consider(p + (q - p) * ((bound - tp) / (tq - tp)), in_strip(p) ? i : (i + 1) % n);
+          if ((tp < bound) != (tq < bound))
+            consider(p + (q - p) * ((bound - tp) / (tq - tp)), in_strip(p) ? i : (i + 1) % n);
         }
       }
       if (best) add(best_point, best_id);
@@ -348,16 +352,20 @@ std::optional<CoreContact> face_contact_of(const SegmentFrame& f, const B& s, Ca
   using T = scalar_of_t<B>;
   if constexpr (std::is_same_v<B, ConvexPolygon<T>>) {
     const std::span<const Vec2<T>> v = s.vertices();
-    return face_contact(f, v.size(), [&](std::size_t i) { return widen(v[i]); }, Calc(0), speculative);
+    return face_contact(
+        f, v.size(), [&](std::size_t i) { return widen(v[i]); }, Calc(0), speculative);
   } else if constexpr (std::is_same_v<B, Circle<T>>) {
     const Vec2c c = widen(s.center());
-    return face_contact(f, 1, [&](std::size_t) { return c; }, Calc(s.radius()), speculative);
+    return face_contact(
+        f, 1, [&](std::size_t) { return c; }, Calc(s.radius()), speculative);
   } else if constexpr (std::is_same_v<B, Capsule<T>>) {
     const std::array<Vec2c, 2> p = {widen(s.a()), widen(s.b())};
-    return face_contact(f, p[0] == p[1] ? 1 : 2, [&](std::size_t i) { return p[i]; }, Calc(s.radius()), speculative);
+    return face_contact(
+        f, p[0] == p[1] ? 1 : 2, [&](std::size_t i) { return p[i]; }, Calc(s.radius()), speculative);
   } else {
     const Core core = core_of(s);  // at most four points: inline, no allocation
-    return face_contact(f, core.size(), [&](std::size_t i) { return core[i]; }, core.radius, speculative);
+    return face_contact(
+        f, core.size(), [&](std::size_t i) { return core[i]; }, core.radius, speculative);
   }
 }
 
@@ -403,8 +411,8 @@ std::optional<CoreContact> chain_contact_concrete(const ChainSegment<T>& s, cons
 /// The contact of segment s and any shape b placed by xb, rounded to T; from b toward the segment
 /// (normal reversed, ids swapped) when `from_b`.
 template <Scalar T, AnyShape B>
-std::optional<Contact<T>> chain_contact_as(const ChainSegment<T>& s, const B& b, const Transform<T>& xb,
-                                           T speculative, bool from_b = false) {
+std::optional<Contact<T>> chain_contact_as(const ChainSegment<T>& s, const B& b, const Transform<T>& xb, T speculative,
+                                           bool from_b = false) {
   const Calc spec = speculative_distance(speculative);
   std::optional<CoreContact> c = visit_shape(b, [&](const auto& cb) -> std::optional<CoreContact> {
     if (xb.is_identity()) return chain_contact_concrete(s, cb, spec);
