@@ -7,7 +7,8 @@
 // about half of the pairs touch. Cross-check before timing: on every pair both libraries must
 // agree where the answer does not depend on either's conventions (the whole shape over the middle
 // of its segment, sunk by more than Box2D's skin and less than a quarter unit): both report a
-// contact, with the segment's normal and the same depth to 1e-4. Deeper, Box2D may take a
+// contact, with the segment's normal to 1e-4 and the same depth to 1e-4 or, where Box2D's float
+// rounding at the pair's coordinates is coarser, 4 ulps of them. Deeper, Box2D may take a
 // polygon's face and push the shape through to the edge's back (a polygon sunk 1.08 over
 // segment 448 gets the normal (0.04, -0.999), pointing behind the edge, from Box2D; collide
 // keeps a shape whose centre is in front on the front).
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace bench {
@@ -75,11 +77,12 @@ ChainPair<In> near_terrain(Maker& m, const Terrain& t, Make make) {
   const float u = m.uniform(1.0f, float(kSegments) - 1.0f), x = kLength * u;
   const std::size_t cell = std::size_t(u);
   const float ground = t.height[cell] + (t.height[cell + 1] - t.height[cell]) * (u - float(cell));
+  Maker replay = m;  // draws the probe's sizes again, so that the shape placed is the probe lifted
   const In probe = make(m, V(x, 0));
   const collide::Aabb<float> box = collide::bounds(probe.c);
   const float lift = ground - box.min().y() + m.uniform(-0.3f, 0.3f);
   // Segment i runs from x = kLength (kSegments - i) to kLength (kSegments - i - 1).
-  return {kSegments - 1 - cell, make(m, V(x, lift))};
+  return {kSegments - 1 - cell, make(replay, V(x, lift))};
 }
 
 const ChainInputs& chain_inputs() {
@@ -140,8 +143,13 @@ bool cross_check(const char* kind, const Terrain& t, const std::vector<ChainPair
     }
     float box2d_depth = 0;
     for (int i = 0; i < m.pointCount; ++i) box2d_depth = std::max(box2d_depth, -w.separations[i]);
+    // Box2D computes in float: its depth is good to a few ulps of the pair's coordinates.
+    const collide::Aabb<float> box = collide::bounds(p.shape.c);
+    const float depth_tol =
+        std::max(1e-4f, 4 * std::numeric_limits<float>::epsilon() *
+                            std::max(box.max().cwiseAbs().maxCoeff(), box.min().cwiseAbs().maxCoeff()));
     if (m.pointCount == 0 || std::fabs(w.normal.x - c->normal.x()) > 1e-4f ||
-        std::fabs(w.normal.y - c->normal.y()) > 1e-4f || std::fabs(box2d_depth - c->depth) > 1e-4f) {
+        std::fabs(w.normal.y - c->normal.y()) > 1e-4f || std::fabs(box2d_depth - c->depth) > depth_tol) {
       std::fprintf(stderr,
                    "chain cross-check: %s over segment %zu: collide normal (%g, %g) depth %g, Box2D %d points "
                    "normal (%g, %g) depth %g\n",
@@ -151,7 +159,7 @@ bool cross_check(const char* kind, const Terrain& t, const std::vector<ChainPair
     }
   }
   std::printf("check chain/%s: %zu of %zu pairs judged against Box2D: OK\n", kind, judged, pairs.size());
-  return judged >= 50;  // a check that judged few pairs proves little
+  return judged >= pairs.size() / 8;  // a check that judged few pairs proves little
 }
 
 template <class In>

@@ -128,6 +128,32 @@ def pair_inputs(codecs, extra=None, flags_extra=0, placed=False):
     return out
 
 
+def chain_inputs(codecs):
+    """(name, bytes) of the target chain: a floor segment from (2, 0) to (-2, 0) (front up; shape a,
+    a capsule of radius 0) against every kind, both scalars, sunk into it, touching it and above
+    it, over its middle and beside its end b, where the floor goes on flat or turns down (a convex
+    corner the segment owns); the segment owning its start or not, with and without a speculative
+    distance, and some with b placed by a transform."""
+    out = []
+    for kind in codecs.names:
+        for dbl in (False, True):
+            segment = codecs.encode("capsule", [2.0, 0.0, -2.0, 0.0, 0.0], dbl)
+            for place, (cx, cy) in (("sunk", (0.0, 0.75)), ("touch", (0.0, 1.0)), ("above", (0.5, 1.5)),
+                                    ("corner", (-2.5, 0.5))):
+                for after, (ax, ay) in (("flat", (-3.0, 0.0)), ("down", (-3.0, -1.0))):
+                    for option, (owns, spec) in (("", (0, 0.0)), ("-start-spec", (1, 0.75))):
+                        tail = scalars([3.0, 0.0, ax, ay], dbl) + bytes([owns]) + scalar(spec, dbl)
+                        b = codecs.shape(kind, cx, cy, 1, dbl)
+                        tag = f"{kind}-{'double' if dbl else 'float'}-{place}-{after}{option}"
+                        out.append((tag, bytes([int(dbl)]) + segment + b + tail))
+            for name, xf in PLACEMENTS:
+                tail = scalars([3.0, 0.0, -3.0, -1.0], dbl) + bytes([0]) + scalar(0.0, dbl)
+                data = (bytes([int(dbl) | PLACED_BIT]) + segment + transform(0.0, 0.0, 1.0, 0.0, dbl)
+                        + codecs.shape(kind, 0, 0, 1, dbl, True) + transform(*xf, dbl))
+                out.append((f"{kind}-{'double' if dbl else 'float'}-placed-{name}", data + tail))
+    return out
+
+
 def ray(dbl):
     return scalars([-4.0, 0.125, 1.0, 0.0, 16.0], dbl)
 
@@ -214,7 +240,7 @@ def broadphase_inputs():
     return out
 
 
-TARGETS = ["overlap_oracle", "resolve", "contact_raycast", "shapes_from_bytes", "broadphase"]
+TARGETS = ["overlap_oracle", "resolve", "contact_raycast", "shapes_from_bytes", "broadphase", "chain"]
 
 
 def main():
@@ -245,6 +271,7 @@ def main():
         "contact_raycast": pair_inputs(codecs, extra=ray) + pair_inputs(codecs, extra=ray, placed=True)[::2],
         "shapes_from_bytes": shapes_from_bytes_inputs(codecs),
         "broadphase": broadphase_inputs(),
+        "chain": chain_inputs(codecs),
     }
     assert sorted(sets) == sorted(TARGETS)
     for target, items in sets.items():

@@ -121,20 +121,4 @@ void check(const Shape<T>& a, const Transform<T>& xa, const Shape<T>& b, const T
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  current_input() = {data, size};
-  Reader r(data, size);
-  decode_case(r, [](const auto& a, const auto& xa, const auto& b, const auto& xb, const auto& ray) {
-    check(a, xa, b, xb, ray);
-  });
-  return 0;
-}
-
-#if defined(COLLIDE_FUZZ_ENGINE)
-extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
-                                               unsigned int seed) {
-  return mutate_pair_case(data, size, max_size, seed, [](Reader& r, auto&& f) {
-    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&, const auto&) { f(a, b); });
-  });
-}
-#endif
+COLLIDE_PLACED_PAIR_EXTRA_FUZZ_TARGET(decode_case, check)

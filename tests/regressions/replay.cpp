@@ -107,8 +107,20 @@ int round_trip_shapes() {
   return bad;
 }
 
-/// A case for every law of the Placed and Moving suites (a circle against a triangle to its right,
-/// with transforms, a motion, a ray, a point, sweeps or transform values as the law takes):
+/// The self-test's case of a chain law: a floor segment (front up) that owns its start, and a
+/// circle sunk 0.5 into it by its transform.
+template <Scalar T>
+laws::Case chain_case(laws::Law law, const laws::Verdict& held) {
+  using V = Vec2<T>;
+  const std::array<V, 4> floor = {V(8, 0), V(4, 0), V(-4, 0), V(-8, 0)};
+  return laws::make_chain_case<T>(law, Chain<T>::make(floor, false).value().segment(0),
+                                  Shape<T>(Circle<T>(V(0, T(1.5)), T(1))),
+                                  Transform<T>::make_translation(V(T(0.5), T(-1))).value(), T(0.25), held, "self-test");
+}
+
+/// A case for every law of the Placed, Moving and Chain suites (a circle against a triangle to its
+/// right, with transforms, a motion, a ray, a point, sweeps or transform values as the law takes; a
+/// circle sunk into a chain segment):
 /// its text survives read_case(write_case(c)), it replays as holding and it draws.
 template <Scalar T>
 int round_trip_other_suites() {
@@ -123,7 +135,10 @@ int round_trip_other_suites() {
   for (const laws::LawInfo& row : laws::kLaws) {
     if (row.suite == laws::LawSuite::Static) continue;
     const bool pair = row.inputs == laws::LawInputs::Pair;
-    laws::Case c = laws::make_case<T>(row.law, a, pair ? std::optional<Shape<T>>(b) : std::nullopt, held, "self-test");
+    laws::Case c =
+        row.suite == laws::LawSuite::Chain
+            ? chain_case<T>(row.law, held)
+            : laws::make_case<T>(row.law, a, pair ? std::optional<Shape<T>>(b) : std::nullopt, held, "self-test");
     if (row.suite == laws::LawSuite::Placed && row.inputs != laws::LawInputs::TransformValues) c.transform_a = xa;
     if (row.law == Law::PlacedAgreement || row.law == Law::PlacedOutputs || row.law == Law::PlacedResolution ||
         row.law == Law::PlacedSeparation || row.law == Law::PlacedFeatureIds || row.law == Law::PlacedSpeculative)

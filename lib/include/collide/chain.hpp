@@ -27,10 +27,12 @@
 ///   corner arc; otherwise it is the face contact along n, from the points of the shape's boundary
 ///   within the strip of points whose projection falls on the segment: a box's or polygon's side
 ///   facing the segment clipped to the strip (each clipped point keeps its vertex's id), or its
-///   lowest point in the strip when that side lies outside it; a circle's lowest point; a
-///   capsule's lowest point and its flat side facing the segment, clipped. It is present when the
-///   two-sided contact is present and a face point lies within `speculative` of the front
-///   (decided on the rounded separations).
+///   lowest point in the strip when that side lies outside it; a circle's lowest point when its
+///   centre lies in the strip; a capsule's core clipped to the strip, each end lowered to the
+///   capsule's lowest point there. These are contact()'s clipping steps with the segment as the
+///   reference face. It is present when the two-sided contact is present and a face point lies
+///   within `speculative` of the front (up to the rounding of its separation, as contact() keeps
+///   clipped points).
 /// - Error: as contact(): the normal, depth, points and separations are rounded results within a
 ///   few rounding_tolerance(segment.as_capsule(), shape) of the exact values.
 /// - Feature ids: the segment is numbered as a capsule (vertex 0 = a, vertex 1 = b, edge 0 = the
@@ -176,15 +178,16 @@ namespace detail {
 struct SegmentFrame {
   Vec2c a, u, n;
   Calc length;
+  /// Whether p projects onto the segment: it lies in the segment's strip.
+  bool in_strip(const Vec2c& p) const noexcept {
+    const Calc t = u.dot(p - a);
+    return t >= 0 && t <= length;
+  }
 };
 inline SegmentFrame segment_frame(const Vec2c& a, const Vec2c& b) noexcept {
   const Vec2c d = b - a;
-  const Calc len = d.norm();  // |d| <= 2^502: its square is finite
-  const Vec2c u = d / len;
-  return {a, u, Vec2c(u.y(), -u.x()), len};
-}
-inline Calc cross2(const Vec2c& p, const Vec2c& q) noexcept {
-  return p.x() * q.y() - p.y() * q.x();
+  const Vec2c u = unit_of(d);  // scaled: a segment 1e-300 long still has a direction
+  return {a, u, Vec2c(u.y(), -u.x()), norm_of(d)};
 }
 
 /// Whether normal m lies strictly inside a corner arc the segment owns: at b when the chain turns
@@ -195,11 +198,11 @@ bool in_own_corner(const ChainSegment<T>& s, const SegmentFrame& f, const Vec2c&
   const Vec2c a = widen(s.a()), b = widen(s.b());
   if (orient(a, b, widen(s.after())) > 0) {
     const Vec2c next = segment_frame(b, widen(s.after())).n;
-    if (cross2(f.n, m) > 0 && cross2(m, next) >= 0) return true;
+    if (cross(f.n, m) > 0 && cross(m, next) >= 0) return true;
   }
   if (s.owns_start_corner() && orient(widen(s.before()), a, b) > 0) {
     const Vec2c prev = segment_frame(widen(s.before()), a).n;
-    if (cross2(prev, m) >= 0 && cross2(m, f.n) > 0) return true;
+    if (cross(prev, m) >= 0 && cross(m, f.n) > 0) return true;
   }
   return false;
 }
@@ -222,156 +225,94 @@ Vec2c reference_point(const B& s) noexcept {
   }
 }
 
-/// The face contact along the segment's front normal (see the file's comment): points of the
-/// shape's boundary within the segment's strip, below the front, each kept when its separation
-/// (its height above the front) is at most `speculative`. The shape is its core (n vertices by
-/// vertex(i), counter-clockwise for three or more) dilated by r. Empty when no point is kept.
+/// The lowest point of core c (its vertices and its sides' crossings of the strip's two edges)
+/// within the segment's strip, as a one-point incident face naming the vertex it lies at or after;
+/// count 0 when no part of the core lies in the strip.
+inline IncidentFace lowest_in_strip(const SegmentFrame& f, const Core& c) {
+  IncidentFace out;
+  Calc best = 0;
+  const auto consider = [&](const Vec2c& p, std::size_t id) {
+    const Calc h = f.n.dot(p - f.a);
+    if (out.count == 1 && !(h < best)) return;
+    best = h;
+    out = {{p, Vec2c::Zero()}, {unsigned(id), 0}, 1};
+  };
+  const std::size_t n = c.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2c &p = c[i], &q = c[next_index(i, n)];
+    if (f.in_strip(p)) consider(p, i);
+    if (n == 1) break;
+    const Calc tp = f.u.dot(p - f.a), tq = f.u.dot(q - f.a);
+    for (const Calc edge : {Calc(0), f.length}) {
+      if ((tp < edge) != (tq < edge))
+        consider(p + (q - p) * ((edge - tp) / (tq - tp)), f.in_strip(p) ? i : next_index(i, n));
+    }
+  }
+  return out;
+}
+
+/// The face contact along the front normal of the segment core `segment` (two points, a to b;
+/// see the file's comment), at the cores' own scale: the segment as the reference face of the
+/// contact engine's steps 3 to 5 (detail/contact_cores.hpp), the shape's core as the incident
+/// core, so that ties between its faces, ends exactly at reach and tilted capsules are handled as
+/// contact() handles them.
 ///
-///   k = the core's vertex lowest along n
-///   a point core (a circle): its lowest point k - r n
-///   a segment core with r > 0 (a capsule): its lowest point k - r n, and its side facing
-///     against n, clipped to the strip (the far end; the near end too when k - r n is outside)
-///   a polygon core (r = 0; a segment or a polygon): the side at k facing most against n,
-///     clipped to the strip; if it lies outside, the lowest of the vertices and side crossings
-///     within the strip
+///   incident = the core's face most anti-parallel to n (its point, for a point core)
+///   clip it to the strip (a point: keep it when it lies in the strip)
+///   if nothing is left: the core's lowest point in the strip (a polygon's side beyond the strip)
 ///   keep the points within reach, midway between the surfaces
-template <class Vertex>
-std::optional<CoreContact> face_contact(const SegmentFrame& f, std::size_t n, Vertex vertex, Calc r, Calc speculative) {
-  const auto height = [&](const Vec2c& p) { return f.n.dot(p - f.a); };
-  const auto along = [&](const Vec2c& p) { return f.u.dot(p - f.a); };
-  const auto in_strip = [&](const Vec2c& p) {
-    const Calc t = along(p);
-    return t >= 0 && t <= f.length;
-  };
-  std::size_t k = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    if (height(vertex(i)) < height(vertex(k))) k = i;
-  }
-  std::array<Vec2c, 2> pts{};
-  std::array<std::uint8_t, 2> ids{};
-  int count = 0;
-  const auto add = [&](const Vec2c& p, std::size_t id) {
-    pts[std::size_t(count)] = p;
-    ids[std::size_t(count)] = std::uint8_t(id);
-    ++count;
-  };
-  // The side [p, q] clipped to the strip, its ends (each keeping its vertex's id) passed to
-  // keep(point, id, is_p); false when it lies wholly outside.
-  const auto clip_side = [&](Vec2c p, Vec2c q, auto&& keep) {
-    Calc tp = along(p), tq = along(q);
-    if ((tp < 0 && tq < 0) || (tp > f.length && tq > f.length)) return false;
-    const auto to = [&](Vec2c& x, Calc& tx, const Vec2c& y, Calc ty, Calc bound) {
-      x = x + (y - x) * ((bound - tx) / (ty - tx));
-      tx = bound;
-    };
-    if (tp < 0) to(p, tp, q, tq, Calc(0));
-    if (tp > f.length) to(p, tp, q, tq, f.length);
-    if (tq < 0) to(q, tq, p, tp, Calc(0));
-    if (tq > f.length) to(q, tq, p, tp, f.length);
-    keep(p, true);
-    keep(q, false);
-    return true;
-  };
-  const Vec2c lowest = vertex(k) - f.n * r;  // the shape's support point against n
-  if (r > 0 && n <= 2) {
-    const bool support = in_strip(lowest);
-    if (support) add(lowest, k);
-    if (n == 2) {
-      const std::size_t o = 1 - k;
-      const Vec2c d = vertex(o) - vertex(k);
-      Vec2c w = Vec2c(d.y(), -d.x()) / d.norm();  // the side's outward normal facing against n
-      if (w.dot(f.n) > 0) w = -w;
-      if (w.dot(f.n) < 0) {
-        clip_side(vertex(k) + w * r, vertex(o) + w * r, [&](const Vec2c& p, bool near_end) {
-          if (!near_end) {
-            add(p, o);
-          } else if (!support) {
-            add(p, k);
-          }
-        });
-      }
-    }
-  } else if (n <= 2) {
-    if (n == 1) {
-      if (in_strip(lowest)) add(lowest, k);
-    } else {
-      clip_side(vertex(0), vertex(1), [&](const Vec2c& p, bool first) { add(p, first ? 0 : 1); });
-    }
-  } else {
-    const std::size_t prev = (k + n - 1) % n, next = (k + 1) % n;
-    // Of the two sides at k, the one whose other end lies lower faces most against n.
-    const std::size_t i0 = height(vertex(prev)) <= height(vertex(next)) ? prev : k;
-    const std::size_t i1 = i0 == k ? next : k;
-    const bool met = clip_side(vertex(i0), vertex(i1), [&](const Vec2c& p, bool first) { add(p, first ? i0 : i1); });
-    if (!met) {
-      // The side lies beyond the strip: the lowest point within it, a vertex or a crossing.
-      std::optional<Calc> best;
-      std::size_t best_id = 0;
-      Vec2c best_point = Vec2c::Zero();
-      const auto consider = [&](const Vec2c& p, std::size_t id) {
-        if (!best || height(p) < *best) {
-          best = height(p);
-          best_point = p;
-          best_id = id;
-        }
-      };
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec2c p = vertex(i), q = vertex((i + 1) % n);
-        const Calc tp = along(p), tq = along(q);
-        if (in_strip(p)) consider(p, i);
-        for (const Calc bound : {Calc(0), f.length}) {
-          if ((tp < bound) != (tq < bound))
-            consider(p + (q - p) * ((bound - tp) / (tq - tp)), in_strip(p) ? i : (i + 1) % n);
-        }
-      }
-      if (best) add(best_point, best_id);
-    }
-  }
+///   empty when no point is kept
+inline std::optional<CoreContact> face_contact_at_scale(const Core& segment, const Core& shape, Calc speculative) {
+  const SegmentFrame f = segment_frame(segment[0], segment[1]);
+  const ReferenceFace face{&segment, &shape, segment[0], segment[1], f.n, 0, 0};
+  IncidentFace incident = find_incident_face(face);
+  const bool met = incident.count == 1 ? f.in_strip(incident.ends[0]) : clip_to_reference_face(incident, face);
+  if (!met) incident = lowest_in_strip(f, shape);
   CoreContact c;
   c.normal = f.n;
-  c.count = 0;
-  Calc least = 0;
-  for (std::size_t i = 0; i < std::size_t(count); ++i) {
-    const Calc sep = height(pts[i]);
-    if (!(sep <= speculative)) continue;
-    const std::size_t j = std::size_t(c.count++);
-    c.points[j] = pts[i] - f.n * (sep / 2);
-    c.separations[j] = sep;
-    c.ids[j] = FeatureId{0, 0, 0, ids[i], FeatureKind::Edge, FeatureKind::Vertex};
-    least = j == 0 ? sep : std::min(least, sep);
-  }
+  keep_points_within_reach(incident, face, c, speculative);
   if (c.count == 0) return std::nullopt;
+  const Calc least = c.count == 1 ? c.separations[0] : std::min(c.separations[0], c.separations[1]);
   c.depth = least < 0 ? -least : Calc(0);
   c.overlapping = least <= 0;
   return c;
 }
 
-/// The face contact of a primitive's core (its vertices numbered as feature.hpp numbers them).
-template <class B>
-std::optional<CoreContact> face_contact_of(const SegmentFrame& f, const B& s, Calc speculative) {
-  using T = scalar_of_t<B>;
-  if constexpr (std::is_same_v<B, ConvexPolygon<T>>) {
-    const std::span<const Vec2<T>> v = s.vertices();
-    return face_contact(
-        f, v.size(), [&](std::size_t i) { return widen(v[i]); }, Calc(0), speculative);
-  } else if constexpr (std::is_same_v<B, Circle<T>>) {
-    const Vec2c c = widen(s.center());
-    return face_contact(
-        f, 1, [&](std::size_t) { return c; }, Calc(s.radius()), speculative);
-  } else if constexpr (std::is_same_v<B, Capsule<T>>) {
-    const std::array<Vec2c, 2> p = {widen(s.a()), widen(s.b())};
-    return face_contact(
-        f, p[0] == p[1] ? 1 : 2, [&](std::size_t i) { return p[i]; }, Calc(s.radius()), speculative);
-  } else {
-    const Core core = core_of(s);  // at most four points: inline, no allocation
-    return face_contact(
-        f, core.size(), [&](std::size_t i) { return core[i]; }, core.radius, speculative);
-  }
+/// face_contact_at_scale() of the segment from a to b, after exact rescaling of tiny cores (as
+/// contact_cores() rescales them: products of subnormal coordinates would lose their bits).
+inline std::optional<CoreContact> face_contact(const Vec2c& a, const Vec2c& b, const Core& shape, Calc speculative) {
+  Core segment;
+  segment.push(a);
+  segment.push(b);
+  const int k = tiny_scale(segment, shape);
+  if (k == 0) return face_contact_at_scale(segment, shape, speculative);
+  std::optional<CoreContact> c =
+      face_contact_at_scale(scaled(segment, k), scaled(shape, k), std::ldexp(speculative, k));
+  if (c) *c = unscaled(*c, k);
+  return c;
 }
 
-}  // namespace detail
-
-namespace detail {
+/// face_contact() of a circle (a point core c of radius r) without building cores, the answer
+/// the contact engine's steps give it: its lowest point when c lies in the strip, kept within
+/// reach (and the rounding of its separation beyond) as keep_points_within_reach() keeps it.
+inline std::optional<CoreContact> circle_face_contact(const SegmentFrame& f, const Vec2c& b, const Vec2c& c, Calc r,
+                                                      Calc speculative) {
+  if (!f.in_strip(c)) return std::nullopt;
+  const Calc s = f.n.dot(c - f.a), reach = r + speculative;
+  if (s > reach) {
+    const Calc scale = std::max({f.a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff(), reach});
+    if (s > reach + kOverlapErrorFactor * kUnitRoundoff * scale) return std::nullopt;
+  }
+  CoreContact out;
+  out.normal = f.n;
+  out.count = 1;
+  out.points[0] = c + f.n * ((-s - r) * 0.5);
+  out.separations[0] = s - r;
+  out.ids[0] = FeatureId{0, 0, 0, 0, FeatureKind::Edge, FeatureKind::Vertex};
+  out.depth = s < r ? r - s : Calc(0);
+  out.overlapping = s <= r;
+  return out;
+}
 
 /// The contact of segment s and a concrete primitive b (stored, or an image in double), by the
 /// rules of the file's comment.
@@ -383,7 +324,11 @@ std::optional<CoreContact> chain_contact_primitive(const ChainSegment<T>& s, con
   if (!two_sided) return two_sided;
   const SegmentFrame f = segment_frame(a, e);
   if (in_own_corner(s, f, two_sided->normal)) return two_sided;
-  return face_contact_of(f, b, speculative);
+  if constexpr (std::is_same_v<B, Circle<scalar_of_t<B>>>) {
+    return circle_face_contact(f, e, widen(b.center()), Calc(b.radius()), speculative);
+  } else {
+    return face_contact(a, e, core_of(b), speculative);
+  }
 }
 
 /// chain_contact_primitive() of a concrete shape: a primitive, or each child of a compound (stored

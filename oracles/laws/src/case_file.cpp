@@ -121,6 +121,13 @@ void write_case(std::ostream& out, const Case& c) {
     }
     out << "max_t " << hex(c.max_t) << '\n';
   }
+  if (info(law).suite == LawSuite::Chain) {
+    const std::array<double, 4> g = c.ghosts.value_or(std::array<double, 4>{});
+    out << "# before a (" << detail::num(g[0]) << ", " << detail::num(g[1]) << "), after b (" << detail::num(g[2])
+        << ", " << detail::num(g[3]) << ")\nghosts " << hex(g[0]) << ' ' << hex(g[1]) << ' ' << hex(g[2]) << ' '
+        << hex(g[3]) << " start " << (c.owns_start ? 1 : 0) << "\n# speculative " << detail::num(c.speculative)
+        << "\nspeculative " << hex(c.speculative) << '\n';
+  }
   if (info(law).inputs == LawInputs::Values || info(law).inputs == LawInputs::TransformValues) {
     out << "values";
     for (double v : c.values) out << ' ' << hex(v);
@@ -228,6 +235,17 @@ Case read_case(std::istream& in) {
       std::array<double, 8> v{};
       for (double& x : v) x = next_value(ls, line, form);
       (which == "a" ? c.sweep_a : c.sweep_b) = v;
+    } else if (key == "ghosts") {
+      constexpr const char* form = "ghosts px py qx qy start 0|1";
+      std::array<double, 4> g{};
+      for (double& x : g) x = next_value(ls, line, form);
+      expect_word(ls, "start", line, form);
+      int start = 0;
+      if (!(ls >> start) || (start != 0 && start != 1)) throw CaseError(where() + "expected '" + form + "'");
+      c.ghosts = g;
+      c.owns_start = start == 1;
+    } else if (key == "speculative") {
+      c.speculative = next_value(ls, line, "speculative X");
     } else if (key == "max_t") {
       c.max_t = next_value(ls, line, "max_t T");
     } else if (key == "values") {
@@ -318,12 +336,28 @@ Sweep<T> sweep_of(const std::optional<std::array<double, 8>>& v) {
   return Sweep<T>{vec<T>(x[0], x[1]), vec<T>(x[2], x[3]), vec<T>(x[4], x[5]), narrow<T>(x[6]), narrow<T>(x[7])};
 }
 
+/// The segment of a chain case: shape a (a capsule of radius 0) between its ghosts, made by
+/// Chain's factory when it owns its start (the first segment of an open chain), else by its own.
+template <Scalar T>
+ChainSegment<T> segment_of(const Case& c) {
+  if (!c.ghosts) throw CaseError("law '" + std::string(name(c.law)) + "' needs the line 'ghosts ...'");
+  const Shape<T> a = from_data<T>(c.a);
+  const Capsule<T>* seg = std::get_if<Capsule<T>>(&a);
+  if (seg == nullptr || seg->radius() != T(0)) throw CaseError("a chain case's shape a is a capsule of radius 0");
+  const std::array<double, 4>& g = *c.ghosts;
+  const Vec2<T> before = vec<T>(g[0], g[1]), after = vec<T>(g[2], g[3]);
+  if (!c.owns_start) return ChainSegment<T>::make(before, seg->a(), seg->b(), after).value();
+  const std::array<Vec2<T>, 4> points = {before, seg->a(), seg->b(), after};
+  return Chain<T>::make(points, false).value().segment(0);
+}
+
 template <Scalar T>
 Verdict replay_as(const Case& c) {
   const Law law = c.law;
-  const bool placed = (info(law).suite == LawSuite::Placed && law != Law::TransformRejection) || law == Law::Cast ||
-                      law == Law::CastLeaving || law == Law::CastSymmetry || law == Law::CastTranslation ||
-                      law == Law::Mass;
+  if (c.transform_a && info(law).suite == LawSuite::Chain) throw CaseError("a chain segment takes no transform");
+  const bool placed = (info(law).suite == LawSuite::Placed && law != Law::TransformRejection) ||
+                      info(law).suite == LawSuite::Chain || law == Law::Cast || law == Law::CastLeaving ||
+                      law == Law::CastSymmetry || law == Law::CastTranslation || law == Law::Mass;
   if (!placed && (c.transform_a || c.transform_b))
     throw CaseError("law '" + std::string(name(law)) + "' takes no transform");
   auto shape_a = [&] { return from_data<T>(c.a); };
@@ -344,6 +378,7 @@ Verdict replay_as(const Case& c) {
   const Ray<T> ray{vec<T>(c.ox, c.oy), vec<T>(c.dx, c.dy)};
   const Vec2<T> point = vec<T>(c.px, c.py), move = vec<T>(c.tx, c.ty);
   const CastInput<T> motion{vec<T>(c.vax, c.vay), vec<T>(c.vbx, c.vby), narrow<T>(c.max_t), xa, xb};
+  const T speculative = narrow<T>(c.speculative);
   switch (law) {
     case Law::Agreement:
       return agreement(shape_a(), shape_b());
@@ -432,6 +467,18 @@ Verdict replay_as(const Case& c) {
     case Law::Toi:
       return toi_law(shape_a(), sweep_of<T>(c.sweep_a), shape_b(), sweep_of<T>(c.sweep_b), narrow<T>(c.max_t),
                      std::span<const double>(kToiSamples));
+    case Law::ChainAdmissible:
+      return chain_admissible(segment_of<T>(c), shape_b(), xb, speculative);
+    case Law::ChainOneSided:
+      return chain_one_sided(segment_of<T>(c), shape_b(), xb, speculative);
+    case Law::ChainSurfaces:
+      return chain_surfaces(segment_of<T>(c), shape_b(), xb, speculative);
+    case Law::ChainPresent:
+      return chain_present(segment_of<T>(c), shape_b(), xb, speculative);
+    case Law::ChainFaceComplete:
+      return chain_face_complete(segment_of<T>(c), shape_b(), xb, speculative);
+    case Law::ChainFaceIds:
+      return chain_face_ids(segment_of<T>(c), shape_b(), xb, speculative);
   }
   throw CaseError("unknown law");
 }
@@ -465,9 +512,26 @@ Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, con
   return c;
 }
 
+template <Scalar T>
+Case make_chain_case(Law law, const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative,
+                     const Verdict& v, std::string source) {
+  Case c = make_case<T>(law, Shape<T>(s.as_capsule()), b, v, std::move(source));
+  if (!xb.is_identity()) c.transform_b = to_data(xb);
+  c.ghosts = std::array<double, 4>{double(s.before().x()), double(s.before().y()), double(s.after().x()),
+                                   double(s.after().y())};
+  c.owns_start = s.owns_start_corner();
+  c.speculative = double(speculative);
+  return c;
+}
+
 template Case make_case<float>(Law, const Shape<float>&, const std::optional<Shape<float>>&, const Verdict&,
                                std::string);
 template Case make_case<double>(Law, const Shape<double>&, const std::optional<Shape<double>>&, const Verdict&,
                                 std::string);
+
+template Case make_chain_case<float>(Law, const ChainSegment<float>&, const Shape<float>&, const Transform<float>&,
+                                     float, const Verdict&, std::string);
+template Case make_chain_case<double>(Law, const ChainSegment<double>&, const Shape<double>&, const Transform<double>&,
+                                      double, const Verdict&, std::string);
 
 }  // namespace collide::laws

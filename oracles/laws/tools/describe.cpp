@@ -6,8 +6,8 @@
 //   collide_describe --laws     the law table only
 //
 // A kind: name, index (its kind byte), layout (fixed, vertices, children), fields (name, role),
-// sample values, byte_prefix. A law: name, inputs (pair, shape, values, scene, transform_values),
-// suite (static, placed, moving), description.
+// sample values, byte_prefix. A law: name, inputs (pair, shape, values, scene, transform_values,
+// chain), suite (static, placed, moving, chain), description.
 
 #include "collide/laws/codec.hpp"
 #include "collide/laws/laws.hpp"

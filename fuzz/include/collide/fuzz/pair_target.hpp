@@ -81,6 +81,21 @@ std::size_t mutate_pair_case(std::uint8_t* data, std::size_t size, std::size_t m
   COLLIDE_PAIR_MUTATOR(([](::collide::fuzz::Reader& r, auto&& f) {                                             \
     decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&) { f(a, b); });                  \
   }))
+/// As COLLIDE_PLACED_PAIR_FUZZ_TARGET for a target whose decode_case(reader, f) calls
+/// f(a, xa, b, xb, extra) with what the target reads after the pair, and whose check takes it too.
+#define COLLIDE_PLACED_PAIR_EXTRA_FUZZ_TARGET(decode_case, check)                                          \
+  extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {                      \
+    ::collide::fuzz::current_input() = {data, size};                                                       \
+    ::collide::fuzz::Reader r(data, size);                                                                 \
+    decode_case(r, [](const auto& a, const auto& xa, const auto& b, const auto& xb, const auto& extra) {   \
+      check(a, xa, b, xb, extra);                                                                          \
+    });                                                                                                    \
+    return 0;                                                                                              \
+  }                                                                                                        \
+  COLLIDE_PAIR_MUTATOR(([](::collide::fuzz::Reader& r, auto&& f) {                                         \
+    decode_case(r, [&](const auto& a, const auto&, const auto& b, const auto&, const auto&) { f(a, b); }); \
+  }))
+
 #define COLLIDE_PAIR_FUZZ_TARGET(decode_case, check)                                  \
   extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
     ::collide::fuzz::current_input() = {data, size};                                  \

@@ -254,9 +254,9 @@ class World {
   /// Places a body by a new transform. Allocates nothing once the world's buffers have grown.
   /// Errors: InvalidProxy, ChainMoved (a chain segment body).
   void move(ProxyId id, const Transform<T>& x) {
-    if (has_segment_[checked(id)])
-      throw BroadphaseError(BroadphaseErrc::ChainMoved, "a chain segment stays where it was added");
-    tracker_.move(id, body_box(*shapes_[checked(id)], x));
+    const std::uint32_t i = checked(id);
+    if (has_segment_[i]) throw BroadphaseError(BroadphaseErrc::ChainMoved, "a chain segment stays where it was added");
+    tracker_.move(id, body_box(*shapes_[i], x));
     transforms_[id.index] = x;
     mark(id);
   }

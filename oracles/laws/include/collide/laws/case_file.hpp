@@ -24,6 +24,10 @@
 ///     values 0x1p+0 nan -inf                          # rejection laws: raw values (kind = shape a's)
 ///     motion 0x1p+0 0x0p+0 0x0p+0 0x0p+0 max_t 0x1p+0 # cast laws: va, vb, max_t
 ///     sweep a lx ly c0x c0y c1x c1y a0 a1             # toi law: local centre, centre at 0 and 1, angles
+///     ghosts px py qx qy start 0                      # chain laws: the points before and after the
+///                                                     # segment (shape a, a capsule of radius 0);
+///                                                     # start 1: it owns the corner at its start
+///     speculative 0x1p-2                              # chain laws: the speculative distance
 ///     expected overlaps true
 ///     got overlaps false
 ///     source property agreement circle_obb float seed 123
@@ -70,6 +74,9 @@ struct Case {
   std::optional<std::array<double, 8>> sweep_a;  ///< toi law: a's sweep (local centre, c0, c1, a0, a1)
   std::optional<std::array<double, 8>> sweep_b;  ///< toi law: b's sweep
   std::vector<double> values;                    ///< rejection laws: raw values for shape a's kind, or of a transform
+  std::optional<std::array<double, 4>> ghosts;   ///< chain laws: the points before a and after b of the segment
+  bool owns_start = false;                       ///< chain laws: the segment owns the corner at its start
+  double speculative = 0;                        ///< chain laws: the speculative distance
   std::string expected;                          ///< what the law expected (oracle side), one line
   std::string got;                               ///< what the library answered, one line
   std::string source;                            ///< where it came from: property + pair + seed, or fuzz target + input
@@ -106,5 +113,11 @@ std::filesystem::path save_case(const std::filesystem::path& dir, const Case& c)
 /// A case from a law's inputs and its verdict (expected/got are filled from the account).
 template <Scalar T>
 Case make_case(Law law, const Shape<T>& a, const std::optional<Shape<T>>& b, const Verdict& v, std::string source);
+
+/// A case of a chain law (law table suite Chain): the segment as shape a (a capsule of radius 0)
+/// with its ghosts, b placed by xb, and the speculative distance.
+template <Scalar T>
+Case make_chain_case(Law law, const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative,
+                     const Verdict& v, std::string source);
 
 }  // namespace collide::laws

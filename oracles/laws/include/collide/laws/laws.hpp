@@ -220,12 +220,14 @@ template <Scalar T>
 Verdict rejection(ShapeKind kind, std::span<const T> values);
 
 /// What a law takes, and so how its tests are registered: per unordered pair of kinds, per kind,
-/// raw values per kind, one group of shapes, or raw values of a transform (once).
-enum class LawInputs : std::uint8_t { Pair, Shape, Values, Scene, TransformValues };
+/// raw values per kind, one group of shapes, raw values of a transform (once), or a chain segment
+/// and a shape (once).
+enum class LawInputs : std::uint8_t { Pair, Shape, Values, Scene, TransformValues, Chain };
 
 /// Which property suite runs a law: world-space shapes (properties/laws_test.cpp), shapes placed
-/// by transforms (properties/transform_test.cpp), or moving shapes (properties/cast_test.cpp).
-enum class LawSuite : std::uint8_t { Static, Placed, Moving };
+/// by transforms (properties/transform_test.cpp), moving shapes (properties/cast_test.cpp), or
+/// chain segments (properties/chain/chain_properties.cpp).
+enum class LawSuite : std::uint8_t { Static, Placed, Moving, Chain };
 
 /// Every law, in the order of law_table.inc.
 enum class Law : std::uint8_t {
@@ -269,14 +271,14 @@ constexpr std::optional<Law> law_from_name(std::string_view s) noexcept {
   }
   return std::nullopt;
 }
-/// "pair", "shape", "values", "scene", "transform_values".
+/// "pair", "shape", "values", "scene", "transform_values", "chain".
 constexpr std::string_view name(LawInputs i) noexcept {
-  constexpr std::string_view names[] = {"pair", "shape", "values", "scene", "transform_values"};
+  constexpr std::string_view names[] = {"pair", "shape", "values", "scene", "transform_values", "chain"};
   return names[static_cast<std::size_t>(i)];
 }
-/// "static", "placed", "moving".
+/// "static", "placed", "moving", "chain".
 constexpr std::string_view name(LawSuite s) noexcept {
-  constexpr std::string_view names[] = {"static", "placed", "moving"};
+  constexpr std::string_view names[] = {"static", "placed", "moving", "chain"};
   return names[static_cast<std::size_t>(s)];
 }
 
@@ -506,5 +508,48 @@ Verdict toi_law(const Shape<T>& a, const Sweep<T>& sa, const Shape<T>& b, const 
 
 /// The sample times of the time-of-impact law in the property suite and in regression cases.
 inline constexpr std::array<double, 8> kToiSamples = {0, 0.125, 0.25, 0.5, 0.75, 0.875, 0.999, 1};
+
+// ---------------------------------------------------------------------------------------------
+// Chains (collide/chain.hpp). Each law judges contact(s, b, xb, speculative) of one segment s and
+// a primitive b placed by xb (a compound is not judged here: the verdict fails and says so), on
+// the semantics stated in chain.hpp, against the exact oracle. Lengths are judged within 64 eps_T
+// of the case's scale (the largest coordinate of the segment, its neighbours and b's bounds),
+// directions within 64 eps_T.
+
+/// Law chain_admissible. The normal is the segment's front normal, or lies inside a corner arc the
+/// segment owns (the turn decided by exact orient()).
+template <Scalar T>
+Verdict chain_admissible(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
+
+/// Law chain_one_sided. A shape whose reference point (chain.hpp) lies strictly behind the
+/// segment gets no contact.
+template <Scalar T>
+Verdict chain_one_sided(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
+
+/// Law chain_surfaces. Each point lies midway between the surfaces: point - normal * separation / 2
+/// on the segment and point + normal * separation / 2 on the exact shape's boundary; the depth is
+/// the least separation's penetration; no separation exceeds the speculative distance.
+template <Scalar T>
+Verdict chain_surfaces(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
+
+/// Law chain_present. A contact is present only when the exact shape lies within the speculative
+/// distance of the segment.
+template <Scalar T>
+Verdict chain_present(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
+
+/// Law chain_face_complete. A shape that overlaps the segment (exact), whose reference point lies
+/// in front, and whose core's lowest point within the segment's strip (narrowed by the tolerance
+/// at both ends) lies below the front by more than the tolerance once lowered by the core's
+/// radius, gets a contact; unless it is the two-sided contact of a corner, its least separation
+/// is no higher than that point. The account of a case that makes this claim begins "claimed".
+template <Scalar T>
+Verdict chain_face_complete(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
+
+/// Law chain_face_ids. A contact is the segment's two-sided contact bit for bit (which the pair
+/// laws judge, its ids renamed for a placed shape as the contact renames them), or each of its
+/// points names the segment's edge 0 and a vertex of the shape's stored core (mapped by xb) whose
+/// sides (or the vertex itself) lie the core's radius from the point's end on the shape.
+template <Scalar T>
+Verdict chain_face_ids(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
 
 }  // namespace collide::laws

@@ -1,0 +1,324 @@
+// The laws of chain contacts (collide/chain.hpp): contact(segment, shape, x, speculative) of one
+// segment against the exact oracle, on the semantics the header states.
+
+#include "support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace collide::laws {
+
+using detail::describe;
+using detail::judged;
+using detail::Judgement;
+using detail::num;
+
+namespace {
+
+/// The frame of the segment from p to q in double: p, unit direction, front normal, length.
+struct Frame {
+  Vec2c a, u, n;
+  double length;
+};
+Frame frame_between(const Vec2c& p, const Vec2c& q) {
+  // Scaled by a power of two first (exactly): a subnormal difference keeps its direction.
+  const Vec2c d = q - p;
+  int e = 0;
+  static_cast<void>(std::frexp(std::max(std::fabs(d.x()), std::fabs(d.y())), &e));
+  const Vec2c s(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+  const double len = s.norm();
+  return {p, s / len, Vec2c(s.y() / len, -s.x() / len), std::ldexp(len, e)};
+}
+template <Scalar T>
+Frame frame_of(const ChainSegment<T>& s) {
+  return frame_between(widen(s.a()), widen(s.b()));
+}
+
+/// What every chain law reads: the segment's answer and the shape as the contact meets it (stored
+/// for the identity, else its image in double, as every placed query meets a shape).
+template <Scalar T>
+struct ChainCase {
+  const ChainSegment<T>& s;
+  const Primitive<T>& b;
+  const Transform<T>& x;
+  T speculative;
+  std::optional<Contact<T>> c;
+  double tol;  ///< lengths: 64 eps_T of the case's scale
+
+  template <class F>
+  decltype(auto) with_met_shape(F&& f) const {
+    return std::visit(
+        [&](const auto& p) -> decltype(auto) {
+          if (x.is_identity()) return f(p);
+          return ::collide::detail::with_placed(p, x, f);
+        },
+        b);
+  }
+  oracle::Placed exact_shape() const {
+    return oracle::placed(std::visit([](const auto& p) { return Shape<T>(p); }, b), x);
+  }
+  ::collide::detail::Core met_core() const {
+    return with_met_shape([](const auto& p) { return ::collide::detail::core_of(p); });
+  }
+  /// The stored shape's core (numbered as feature ids name a placed shape's features) mapped by x
+  /// in double: within rounding of the core the contact met.
+  ::collide::detail::Core stored_core_placed() const {
+    const ::collide::detail::Core stored = std::visit([](const auto& p) { return ::collide::detail::core_of(p); }, b);
+    ::collide::detail::Core out;
+    out.radius = stored.radius;
+    const Vec2c t = widen(x.position()), q = widen(x.rotation());
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      const Vec2c& p = stored[i];
+      out.push(Vec2c(q.x() * p.x() - q.y() * p.y(), q.y() * p.x() + q.x() * p.y()) + t);
+    }
+    return out;
+  }
+  Vec2c reference_point() const {
+    return with_met_shape([](const auto& p) { return ::collide::detail::reference_point(p); });
+  }
+  /// Whether c is, bit for bit, the segment's two-sided contact (which the pair laws judge).
+  bool is_two_sided() const {
+    // As the contact names features of a placed shape: the stored shape's (placement.hpp).
+    const Calc spec = ::collide::detail::speculative_distance(speculative);
+    const std::optional<::collide::detail::CoreContact> core = std::visit(
+        [&](const auto& stored) {
+          if (x.is_identity()) return ::collide::detail::contact_primitives(s.as_capsule(), stored, spec);
+          return ::collide::detail::with_placed(stored, x, [&](const auto& p) {
+            std::optional<::collide::detail::CoreContact> found =
+                ::collide::detail::contact_primitives(s.as_capsule(), p, spec);
+            if (found) ::collide::detail::name_placed_features(stored, p, x, *found, true);
+            return found;
+          });
+        },
+        b);
+    std::optional<Contact<T>> two;
+    if (core) ::collide::detail::round_into(*core, two);
+    if (!c || !two || two->count != c->count || two->normal != c->normal || two->depth != c->depth) return false;
+    for (std::size_t i = 0; i < std::size_t(c->count); ++i) {
+      if (two->points[i] != c->points[i] || two->separations[i] != c->separations[i] || !(two->ids[i] == c->ids[i]))
+        return false;
+    }
+    return true;
+  }
+};
+
+/// The laws' tolerance for lengths: 64 eps_T of the largest coordinate of the segment, its
+/// neighbours and the placed shape's bounds, plus 8 denorm_min_T.
+template <Scalar T>
+double length_tolerance(const ChainSegment<T>& s, const Primitive<T>& b, const Transform<T>& x) {
+  double scale = 0;
+  for (const Vec2<T>& p : {s.before(), s.a(), s.b(), s.after()})
+    scale = std::max(scale, widen(p).cwiseAbs().maxCoeff());
+  const Aabb<T> box = std::visit([&](const auto& p) { return bounds(p, x); }, b);
+  scale = std::max({scale, widen(box.min()).cwiseAbs().maxCoeff(), widen(box.max()).cwiseAbs().maxCoeff()});
+  // Plus the points' rounding to T where it is absolute: subnormal coordinates.
+  return 64 * double(std::numeric_limits<T>::epsilon()) * scale + 8 * double(std::numeric_limits<T>::denorm_min());
+}
+
+std::string point_text(const Vec2c& p) {
+  return "(" + num(p.x()) + ", " + num(p.y()) + ")";
+}
+
+template <Scalar T>
+std::string answer_text(const std::optional<Contact<T>>& c) {
+  if (!c) return "no contact";
+  std::string out = "contact normal " + point_text(widen(c->normal)) + " depth " + num(double(c->depth)) + " points";
+  for (std::size_t i = 0; i < std::size_t(c->count); ++i)
+    out += " " + point_text(widen(c->points[i])) + " sep " + num(double(c->separations[i]));
+  return out;
+}
+
+/// Runs law(k, r) on the segment's answer: a compound b is not judged (the verdict fails, saying
+/// so), and a shape the segment's factory would refuse is a broken input.
+template <Scalar T, class Law>
+Verdict chain_judged(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& x, T speculative, Law law) {
+  const std::string context = "segment " + point_text(widen(s.before())) + " " + point_text(widen(s.a())) + " -> " +
+                              point_text(widen(s.b())) + " " + point_text(widen(s.after())) +
+                              (s.owns_start_corner() ? " (owns its start)" : "") + "; b = " + describe(b) +
+                              " placed at " + point_text(widen(x.position())) + " turned " +
+                              point_text(widen(x.rotation())) + "; speculative " + num(double(speculative));
+  return judged(context, [&](Judgement& r) {
+    const std::optional<Primitive<T>> p = std::visit(
+        [](const auto& v) -> std::optional<Primitive<T>> {
+          if constexpr (::collide::detail::is_compound_v<decltype(v)>) {
+            return std::nullopt;
+          } else {
+            return Primitive<T>(v);
+          }
+        },
+        b);
+    if (!p) {
+      r.require(false, "a primitive shape (the chain laws judge primitives)", "a compound");
+      return;
+    }
+    ChainCase<T> k{s, *p, x, speculative, contact(s, b, x, speculative), length_tolerance(s, *p, x)};
+    r.note(answer_text(k.c));
+    law(k, r);
+  });
+}
+
+bool is_face_normal(const Frame& f, const Vec2c& m, double tol) {
+  return (m - f.n).norm() <= tol;
+}
+
+template <Scalar T>
+double normal_tolerance() {
+  return 64 * double(std::numeric_limits<T>::epsilon());
+}
+
+/// The height above the front of the core's lowest point within the segment's strip narrowed by
+/// tol at both ends: the least over its vertices there and the ends of its sides cut to it
+/// (nullopt when the core misses it). The shape's lowest point there lies the radius lower.
+std::optional<double> lowest_in_inner_strip(const Frame& f, const ::collide::detail::Core& core, double tol) {
+  const double lo = tol, hi = f.length - tol;
+  if (!(lo < hi)) return std::nullopt;
+  std::optional<double> least;
+  const auto take = [&](const Vec2c& p) {
+    const double h = f.n.dot(p - f.a);
+    if (!least || h < *least) least = h;
+  };
+  const std::size_t n = core.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2c p = core[i], q = core[(i + 1) % n];
+    const double tp = f.u.dot(p - f.a), tq = f.u.dot(q - f.a);
+    if (tp >= lo && tp <= hi) take(p);
+    if (n == 1 || tp == tq) continue;
+    for (const double edge : {lo, hi}) {
+      const double w = (edge - tp) / (tq - tp);  // where the side meets the narrowed strip's edge
+      if (w > 0 && w < 1) take(p + (q - p) * w);
+    }
+  }
+  return least;
+}
+
+}  // namespace
+
+template <Scalar T>
+Verdict chain_admissible(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (!k.c) return;
+    const Frame f = frame_of(s);
+    const Vec2c m = widen(k.c->normal);
+    const double tol = normal_tolerance<T>();
+    if (is_face_normal(f, m, tol)) return;
+    const auto in_arc = [&](const Vec2c& from, const Vec2c& to) {
+      return cross(from, m) >= -tol && cross(m, to) >= -tol;  // the arc is less than a half turn
+    };
+    const Vec2c before = widen(s.before()), a = widen(s.a()), e = widen(s.b()), after = widen(s.after());
+    const bool at_end = orient(a, e, after) > 0 && in_arc(f.n, frame_between(e, after).n);
+    const bool at_start = s.owns_start_corner() && orient(before, a, e) > 0 && in_arc(frame_between(before, a).n, f.n);
+    r.require(at_end || at_start, "the front normal " + point_text(f.n) + " or a normal inside an owned corner arc",
+              "normal " + point_text(m));
+  });
+}
+
+template <Scalar T>
+Verdict chain_one_sided(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (orient(widen(s.a()), widen(s.b()), k.reference_point()) <= 0) return;
+    r.require(!k.c, "no contact for a shape whose reference point lies behind the front", "a contact");
+  });
+}
+
+template <Scalar T>
+Verdict chain_surfaces(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (!k.c) return;
+    const Contact<T>& c = *k.c;
+    r.require(c.count == 1 || c.count == 2, "1 or 2 points", std::to_string(c.count));
+    if (!r.v.ok) return;
+    const Vec2c m = widen(c.normal);
+    const oracle::Placed shape = k.exact_shape();
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < std::size_t(c.count); ++i) {
+      const double sep = double(c.separations[i]);
+      least = std::min(least, sep);
+      const Vec2c on_segment = widen(c.points[i]) - m * (sep / 2), on_shape = widen(c.points[i]) + m * (sep / 2);
+      const std::string at = "point " + std::to_string(i) + " ";
+      r.require(oracle::compare_boundary_distance(s.as_capsule(), on_segment, k.tol) <= 0,
+                at + "with its segment end on the segment", "its end " + point_text(on_segment) + " off it");
+      r.require(oracle::compare_boundary_distance(shape, on_shape, k.tol) <= 0,
+                at + "with its shape end on the exact shape's boundary", "its end " + point_text(on_shape) + " off it");
+      r.require(sep <= double(k.speculative) + k.tol, at + "within the speculative distance", "separation " + num(sep));
+    }
+    const double depth = least < 0 ? -least : 0;
+    r.require(std::fabs(double(c.depth) - depth) <= k.tol, "depth " + num(depth) + ", the least separation's",
+              "depth " + num(double(c.depth)));
+  });
+}
+
+template <Scalar T>
+Verdict chain_present(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (!k.c) return;
+    r.require(oracle::compare_distance(s.as_capsule(), k.exact_shape(), double(k.speculative) + k.tol) <= 0,
+              "a contact only within the speculative distance of the exact shape", "a contact of a shape farther");
+  });
+}
+
+template <Scalar T>
+Verdict chain_face_complete(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (orient(widen(s.a()), widen(s.b()), k.reference_point()) >= 0) return;
+    if (!oracle::overlaps(s.as_capsule(), k.exact_shape())) return;
+    const Frame f = frame_of(s);
+    const ::collide::detail::Core core = k.met_core();
+    const std::optional<double> h = lowest_in_inner_strip(f, core, k.tol);
+    if (!h || !(*h - core.radius < -k.tol)) return;
+    const double lowest = *h - core.radius;
+    r.v.account = "claimed: the shape reaches " + num(lowest) + " below the front within the strip; " + r.v.account;
+    r.require(k.c.has_value(), "a contact: the shape reaches " + num(lowest) + " below the front within the strip",
+              "no contact");
+    if (!k.c || k.is_two_sided()) return;
+    const double least = double(std::min(k.c->separations[0], k.c->separations[std::size_t(k.c->count - 1)]));
+    r.require(least <= lowest + k.tol, "a least separation no higher than " + num(lowest),
+              "least separation " + num(least));
+  });
+}
+
+template <Scalar T>
+Verdict chain_face_ids(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
+  return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (!k.c || k.is_two_sided()) return;
+    const Contact<T>& c = *k.c;
+    const ::collide::detail::Core core = k.stored_core_placed();
+    const std::size_t n = core.size();
+    for (std::size_t i = 0; i < std::size_t(c.count) && r.v.ok; ++i) {
+      const FeatureId id = c.ids[i];
+      const std::string at = "point " + std::to_string(i) + " ";
+      r.require(id.kind_a == FeatureKind::Edge && id.index_a == 0 && id.kind_b == FeatureKind::Vertex,
+                at + "naming the segment's edge 0 and a vertex of the shape", "another feature pair");
+      const std::size_t v = id.index_b;
+      r.require(v < n, at + "naming one of the core's " + std::to_string(n) + " vertices",
+                "vertex " + std::to_string(v));
+      if (!r.v.ok) return;
+      // The shape's surface point lies the core's radius from the sides at the vertex it names.
+      const Vec2c x = widen(c.points[i]) + widen(c.normal) * (double(c.separations[i]) / 2);
+      const auto to_side = [&](const Vec2c& p, const Vec2c& q) {
+        const Vec2c d = q - p;
+        const double t = d.squaredNorm() > 0 ? std::clamp((x - p).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+        return (p + d * t - x).norm();
+      };
+      const double near = std::min(to_side(core[v], core[(v + 1) % n]), to_side(core[(v + n - 1) % n], core[v]));
+      r.require(std::fabs(near - core.radius) <= k.tol,
+                at + "lying the core's radius " + num(core.radius) + " from the sides at vertex " + std::to_string(v),
+                "distance " + num(near));
+    }
+  });
+}
+
+#define COLLIDE_CHAIN_LAW(law)                                                                                  \
+  template Verdict law<float>(const ChainSegment<float>&, const Shape<float>&, const Transform<float>&, float); \
+  template Verdict law<double>(const ChainSegment<double>&, const Shape<double>&, const Transform<double>&, double);
+COLLIDE_CHAIN_LAW(chain_admissible)
+COLLIDE_CHAIN_LAW(chain_one_sided)
+COLLIDE_CHAIN_LAW(chain_surfaces)
+COLLIDE_CHAIN_LAW(chain_present)
+COLLIDE_CHAIN_LAW(chain_face_complete)
+COLLIDE_CHAIN_LAW(chain_face_ids)
+#undef COLLIDE_CHAIN_LAW
+
+}  // namespace collide::laws
