@@ -46,7 +46,7 @@ struct ChainCase {
   const Transform<T>& x;
   T speculative;
   std::optional<Contact<T>> c;
-  double tol;  ///< lengths: 64 eps_T of the case's scale
+  double tol;  ///< lengths: length_tolerance()
 
   template <class F>
   decltype(auto) with_met_shape(F&& f) const {
