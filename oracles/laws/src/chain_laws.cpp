@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace collide::laws {
 
@@ -69,11 +70,7 @@ struct ChainCase {
     const ::collide::detail::Core stored = std::visit([](const auto& p) { return ::collide::detail::core_of(p); }, b);
     ::collide::detail::Core out;
     out.radius = stored.radius;
-    const Vec2c t = widen(x.position()), q = widen(x.rotation());
-    for (std::size_t i = 0; i < stored.size(); ++i) {
-      const Vec2c& p = stored[i];
-      out.push(Vec2c(q.x() * p.x() - q.y() * p.y(), q.y() * p.x() + q.x() * p.y()) + t);
-    }
+    for (std::size_t i = 0; i < stored.size(); ++i) out.push(x.apply(stored[i]));
     return out;
   }
   Vec2c reference_point() const {
@@ -141,20 +138,12 @@ Verdict chain_judged(const ChainSegment<T>& s, const Shape<T>& b, const Transfor
                               " placed at " + point_text(widen(x.position())) + " turned " +
                               point_text(widen(x.rotation())) + "; speculative " + num(double(speculative));
   return judged(context, [&](Judgement& r) {
-    const std::optional<Primitive<T>> p = std::visit(
-        [](const auto& v) -> std::optional<Primitive<T>> {
-          if constexpr (::collide::detail::is_compound_v<decltype(v)>) {
-            return std::nullopt;
-          } else {
-            return Primitive<T>(v);
-          }
-        },
-        b);
-    if (!p) {
+    if (std::holds_alternative<Compound<T>>(b)) {
       r.require(false, "a primitive shape (the chain laws judge primitives)", "a compound");
       return;
     }
-    ChainCase<T> k{s, *p, x, speculative, contact(s, b, x, speculative), length_tolerance(s, *p, x)};
+    const std::vector<Primitive<T>> p = primitives_of(b);  // the one primitive b is
+    ChainCase<T> k{s, p[0], x, speculative, contact(s, b, x, speculative), length_tolerance(s, p[0], x)};
     r.note(answer_text(k.c));
     law(k, r);
   });
