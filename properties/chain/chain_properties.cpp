@@ -1,6 +1,6 @@
 /// The laws of chain contacts (collide/chain.hpp, the law table's Chain suite: laws.hpp), for
 /// both scalars: one GoogleTest test per law and scalar, each checked by RapidCheck on random
-/// chains (open and loops, flat runs with bumps and free zigzags) against every primitive kind, in
+/// chains (open and loops, flat runs with bumps and free zigzags) against every kind, in
 /// world space or placed by a transform, with and without a speculative distance; every segment of
 /// a chain is judged. A counterexample is saved as a case file (tests/regressions). Depth:
 /// RC_PARAMS (ctest: 2,000 cases per law and scalar, seed 1).
@@ -19,6 +19,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace collide::props {
@@ -26,12 +27,12 @@ namespace {
 
 /// What the laws judged, printed at the end, so that a run shows they were not vacuous.
 struct Stats {
-  long segments = 0, face = 0, corner = 0, behind = 0, completeness = 0;
+  long segments = 0, face = 0, corner = 0, behind = 0, completeness = 0, compound = 0;
 };
 Stats g_stats;
 
-/// One case: a chain, a shape placed by a transform (the identity half the time) and a
-/// speculative distance.
+/// One case: a chain, a shape (a compound one time in five) placed by a transform (the identity
+/// half the time) and a speculative distance.
 template <Scalar T>
 struct Case {
   Chain<T> chain;
@@ -61,8 +62,10 @@ Case<T> gen_case() {
   RC_PRE(chain.has_value());
   const T speculative = *rc::gen::inRange(0, 3) == 0 ? T(grid(1, 4) * s) : T(0);
   const Transform<T> x = *rc::gen::arbitrary<bool>() ? Transform<T>() : gen_transform<T>(s);
-  return {std::move(chain).value(), std::visit([](const auto& p) { return Shape<T>(p); }, gen_any_primitive<T>(s)), x,
-          speculative};
+  Shape<T> shape = *rc::gen::inRange(0, 5) == 0
+                       ? gen_shape<ShapeKind::Compound, T>(s)
+                       : std::visit([](const auto& p) { return Shape<T>(p); }, gen_any_primitive<T>(s));
+  return {std::move(chain).value(), std::move(shape), x, speculative};
 }
 
 template <Scalar T>
@@ -96,6 +99,7 @@ void count(const Case<T>& k, const ChainSegment<T>& seg) {
   const std::optional<Contact<T>> c = contact(seg, k.shape, k.x, k.speculative);
   const Vec2c a = widen(seg.a()), b = widen(seg.b()), n = Vec2c(b.y() - a.y(), a.x() - b.x()).normalized();
   if (c) ++((widen(c->normal) - n).norm() <= 1e-4 ? g_stats.face : g_stats.corner);
+  if (c && std::holds_alternative<Compound<T>>(k.shape)) ++g_stats.compound;
   const Vec2c ref = std::visit(
       [&](const auto& s) {
         if constexpr (::collide::detail::is_compound_v<decltype(s)>) {
@@ -151,8 +155,8 @@ int main(int argc, char** argv) {
   const int failed = RUN_ALL_TESTS();
   const collide::props::Stats& s = collide::props::g_stats;
   std::printf(
-      "chain laws judged %ld segments: %ld face contacts, %ld corner contacts, %ld shapes behind, %ld "
-      "completeness claims\n",
-      s.segments, s.face, s.corner, s.behind, s.completeness);
+      "chain laws judged %ld segments: %ld face contacts, %ld corner contacts, %ld contacts of compounds, %ld "
+      "shapes behind, %ld completeness claims\n",
+      s.segments, s.face, s.corner, s.compound, s.behind, s.completeness);
   return failed;
 }

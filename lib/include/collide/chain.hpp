@@ -251,13 +251,40 @@ inline IncidentFace lowest_in_strip(const SegmentFrame& f, const Core& c) {
   return out;
 }
 
+/// Step 3 checked for a normal that is not the pair's own axis but the segment's: a sliver's faces
+/// can all lie nearly across it, and the face rounding finds most anti-parallel may end above the
+/// core's lowest vertex. Heights along a convex core's boundary fall to the lowest vertex and rise
+/// again, so walk downhill from the face's lower end; when that leaves the face, take the more
+/// anti-parallel of the two faces at the vertex reached.
+inline void reach_lowest_vertex(IncidentFace& incident, const SegmentFrame& f, const Core& c) {
+  const std::size_t n = c.size();
+  if (incident.count != 2 || n < 3) return;
+  const auto height = [&](std::size_t i) { return f.n.dot(c[i] - f.a); };
+  const auto prev = [&](std::size_t i) { return i == 0 ? n - 1 : i - 1; };
+  const std::size_t j = incident.vertices[0], j1 = incident.vertices[1];
+  const bool back = height(j) <= height(j1);
+  std::size_t k = back ? j : j1;
+  for (std::size_t step = 0; step < n; ++step) {
+    const std::size_t next = back ? prev(k) : next_index(k, n);
+    if (!(height(next) < height(k))) break;
+    k = next;
+  }
+  if (k == j || k == j1) return;
+  const std::size_t before = prev(k);
+  const auto alignment = [&](std::size_t from) {  // the lower, the more anti-parallel
+    return -perp(unit_of(c[next_index(from, n)] - c[from])).dot(f.n);
+  };
+  incident = incident_edge(c, alignment(before) < alignment(k) ? before : k);
+}
+
 /// The face contact along the front normal of the segment core `segment` (two points, a to b;
 /// see the file's comment), at the cores' own scale: the segment as the reference face of the
 /// contact engine's steps 3 to 5 (detail/contact_cores.hpp), the shape's core as the incident
 /// core, so that ties between its faces, ends exactly at reach and tilted capsules are handled as
 /// contact() handles them.
 ///
-///   incident = the core's face most anti-parallel to n (its point, for a point core)
+///   incident = the core's face most anti-parallel to n (its point, for a point core), moved to
+///              the core's lowest vertex when rounding chose a face beside it
 ///   clip it to the strip (a point: keep it when it lies in the strip)
 ///   if nothing is left: the core's lowest point in the strip (a polygon's side beyond the strip)
 ///   keep the points within reach, midway between the surfaces
@@ -266,6 +293,7 @@ inline std::optional<CoreContact> face_contact_at_scale(const Core& segment, con
   const SegmentFrame f = segment_frame(segment[0], segment[1]);
   const ReferenceFace face{&segment, &shape, segment[0], segment[1], f.n, 0, 0};
   IncidentFace incident = find_incident_face(face);
+  reach_lowest_vertex(incident, f, shape);
   const bool met = incident.count == 1 ? f.in_strip(incident.ends[0]) : clip_to_reference_face(incident, face);
   if (!met) incident = lowest_in_strip(f, shape);
   CoreContact c;

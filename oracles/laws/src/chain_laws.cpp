@@ -13,6 +13,7 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::distance_to_segment;
 using detail::judged;
 using detail::Judgement;
 using detail::num;
@@ -38,39 +39,57 @@ Frame frame_of(const ChainSegment<T>& s) {
   return frame_between(widen(s.a()), widen(s.b()));
 }
 
-/// What every chain law reads: the segment's answer and the shape as the contact meets it (stored
-/// for the identity, else its image in double, as every placed query meets a shape).
+/// What every chain law reads: the segment's answer and the primitive as the contact meets it
+/// (stored for the identity, else its image in double, as every placed query meets a shape). For
+/// a compound, one child (`child`, its index; -1 for a primitive shape) met as the library meets
+/// it: through its image under the child's own transform and x.
 template <Scalar T>
 struct ChainCase {
   const ChainSegment<T>& s;
-  const Primitive<T>& b;
+  const Shape<T>& whole;
+  const Primitive<T>& b;  ///< the primitive judged: the shape, or the compound's child
+  int child;
   const Transform<T>& x;
   T speculative;
   std::optional<Contact<T>> c;
   double tol;  ///< lengths: length_tolerance()
 
+  const Compound<T>* compound() const { return std::get_if<Compound<T>>(&whole); }
+  /// The body pose a placed compound's children are imaged under (the identity's: none).
+  ::collide::detail::Pose body() const { return x.is_identity() ? ::collide::detail::Pose{} : x.pose(); }
+  /// Whether the primitive is met as stored: the shape in world space, or a child of a world-space
+  /// compound without child transforms.
+  bool met_as_stored() const { return x.is_identity() && (child < 0 || !compound()->has_child_transforms()); }
+
   template <class F>
-  decltype(auto) with_met_shape(F&& f) const {
+  auto with_met_shape(F&& f) const {
     return std::visit(
-        [&](const auto& p) -> decltype(auto) {
-          if (x.is_identity()) return f(p);
-          return ::collide::detail::with_placed(p, x, f);
+        [&](const auto& p) {
+          if (met_as_stored()) return f(p);
+          if (child < 0) return ::collide::detail::with_placed(p, x, f);
+          std::optional<decltype(f(p))> out;
+          ::collide::detail::visit_child(*compound(), std::size_t(child), body(),
+                                         [&](const auto& image) { out.emplace(f(image)); });
+          return *out;
         },
         b);
   }
-  oracle::Placed exact_shape() const {
-    return oracle::placed(std::visit([](const auto& p) { return Shape<T>(p); }, b), x);
+  /// Child i of the compound alone, with its own transform: placed by x, met as it is met within.
+  Shape<T> only_child(std::size_t i) const {
+    return Compound<T>::make_placed({{compound()->children()[i], compound()->child_transform(i)}}).value();
   }
+  oracle::Placed exact_shape() const { return oracle::placed(child < 0 ? whole : only_child(std::size_t(child)), x); }
   ::collide::detail::Core met_core() const {
     return with_met_shape([](const auto& p) { return ::collide::detail::core_of(p); });
   }
-  /// The stored shape's core (numbered as feature ids name a placed shape's features) mapped by x
-  /// in double: within rounding of the core the contact met.
+  /// The stored primitive's core (numbered as feature ids name a placed shape's features) mapped
+  /// by the child's transform and x in double: within rounding of the core the contact met.
   ::collide::detail::Core stored_core_placed() const {
     const ::collide::detail::Core stored = std::visit([](const auto& p) { return ::collide::detail::core_of(p); }, b);
+    const Transform<T> own = child < 0 ? Transform<T>() : compound()->child_transform(std::size_t(child));
     ::collide::detail::Core out;
     out.radius = stored.radius;
-    for (std::size_t i = 0; i < stored.size(); ++i) out.push(x.apply(stored[i]));
+    for (std::size_t i = 0; i < stored.size(); ++i) out.push(x.apply(own.apply(stored[i])));
     return out;
   }
   Vec2c reference_point() const {
@@ -78,19 +97,30 @@ struct ChainCase {
   }
   /// Whether c is, bit for bit, the segment's two-sided contact (which the pair laws judge).
   bool is_two_sided() const {
-    // As the contact names features of a placed shape: the stored shape's (placement.hpp).
     const Calc spec = ::collide::detail::speculative_distance(speculative);
-    const std::optional<::collide::detail::CoreContact> core = std::visit(
-        [&](const auto& stored) {
-          if (x.is_identity()) return ::collide::detail::contact_primitives(s.as_capsule(), stored, spec);
-          return ::collide::detail::with_placed(stored, x, [&](const auto& p) {
-            std::optional<::collide::detail::CoreContact> found =
-                ::collide::detail::contact_primitives(s.as_capsule(), p, spec);
-            if (found) ::collide::detail::name_placed_features(stored, p, x, *found, true);
-            return found;
-          });
-        },
-        b);
+    std::optional<::collide::detail::CoreContact> core;
+    if (child < 0) {
+      // As the contact names features of a placed shape: the stored shape's (placement.hpp).
+      core = std::visit(
+          [&](const auto& stored) {
+            if (x.is_identity()) return ::collide::detail::contact_primitives(s.as_capsule(), stored, spec);
+            return ::collide::detail::with_placed(stored, x, [&](const auto& p) {
+              std::optional<::collide::detail::CoreContact> found =
+                  ::collide::detail::contact_primitives(s.as_capsule(), p, spec);
+              if (found) ::collide::detail::name_placed_features(stored, p, x, *found, true);
+              return found;
+            });
+          },
+          b);
+    } else {
+      // As a compound's contact names its child and that child's features (shape_traits.hpp).
+      core =
+          with_met_shape([&](const auto& p) { return ::collide::detail::contact_primitives(s.as_capsule(), p, spec); });
+      if (core) {
+        for (FeatureId& id : core->ids) id.child_b = std::uint16_t(child);
+        if (!met_as_stored()) ::collide::detail::name_child_features(*compound(), body(), *core, true);
+      }
+    }
     std::optional<Contact<T>> two;
     if (core) ::collide::detail::round_into(*core, two);
     if (!c || !two || two->count != c->count || two->normal != c->normal || two->depth != c->depth) return false;
@@ -103,16 +133,20 @@ struct ChainCase {
 };
 
 /// The laws' tolerance for lengths: 64 eps_T of the largest coordinate of the segment, its
-/// neighbours and the placed shape's bounds, plus 8 denorm_min_T.
+/// neighbours and the placed shape's bounds, plus 8 denorm_min_T and twice the placement's
+/// transform_tolerance().
 template <Scalar T>
-double length_tolerance(const ChainSegment<T>& s, const Primitive<T>& b, const Transform<T>& x) {
+double length_tolerance(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& x) {
   double scale = 0;
   for (const Vec2<T>& p : {s.before(), s.a(), s.b(), s.after()})
     scale = std::max(scale, widen(p).cwiseAbs().maxCoeff());
-  const Aabb<T> box = std::visit([&](const auto& p) { return bounds(p, x); }, b);
+  const Aabb<T> box = bounds(b, x);
   scale = std::max({scale, widen(box.min()).cwiseAbs().maxCoeff(), widen(box.max()).cwiseAbs().maxCoeff()});
-  // Plus the points' rounding to T where it is absolute: subnormal coordinates.
-  return 64 * double(std::numeric_limits<T>::epsilon()) * scale + 8 * double(std::numeric_limits<T>::denorm_min());
+  // Plus the points' rounding to T where it is absolute (subnormal coordinates), and the placed
+  // image's own error, both the contact's and the laws' (the placement contract, transformed.hpp).
+  const double image = double(transform_tolerance(b, x));
+  return 64 * double(std::numeric_limits<T>::epsilon()) * scale + 8 * double(std::numeric_limits<T>::denorm_min()) +
+         2 * image;
 }
 
 std::string point_text(const Vec2c& p) {
@@ -128,8 +162,9 @@ std::string answer_text(const std::optional<Contact<T>>& c) {
   return out;
 }
 
-/// Runs law(k, r) on the segment's answer: a compound b is not judged (the verdict fails, saying
-/// so), and a shape the segment's factory would refuse is a broken input.
+/// Runs law(k, r) on the segment's answer, and a shape the segment's factory would refuse is a
+/// broken input. A compound is judged through its children, each on its own as the library meets
+/// it: a contact through the child its ids name (all the same one), no contact through every child.
 template <Scalar T, class Law>
 Verdict chain_judged(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& x, T speculative, Law law) {
   const std::string context = "segment " + point_text(widen(s.before())) + " " + point_text(widen(s.a())) + " -> " +
@@ -138,14 +173,29 @@ Verdict chain_judged(const ChainSegment<T>& s, const Shape<T>& b, const Transfor
                               " placed at " + point_text(widen(x.position())) + " turned " +
                               point_text(widen(x.rotation())) + "; speculative " + num(double(speculative));
   return judged(context, [&](Judgement& r) {
-    if (std::holds_alternative<Compound<T>>(b)) {
-      r.require(false, "a primitive shape (the chain laws judge primitives)", "a compound");
+    const std::optional<Contact<T>> c = contact(s, b, x, speculative);
+    const double tol = length_tolerance(s, b, x);
+    r.note(answer_text(c));
+    const std::vector<Primitive<T>> p = primitives_of(b);
+    if (!std::holds_alternative<Compound<T>>(b)) {
+      law(ChainCase<T>{s, b, p[0], -1, x, speculative, c, tol}, r);
       return;
     }
-    const std::vector<Primitive<T>> p = primitives_of(b);  // the one primitive b is
-    ChainCase<T> k{s, p[0], x, speculative, contact(s, b, x, speculative), length_tolerance(s, p[0], x)};
-    r.note(answer_text(k.c));
-    law(k, r);
+    if (c) {
+      const std::size_t j = c->ids[0].child_b;
+      r.require(j < p.size(), "ids naming one of the compound's " + std::to_string(p.size()) + " children",
+                "child " + std::to_string(j));
+      for (std::size_t i = 0; i < std::size_t(c->count) && r.v.ok; ++i) {
+        r.require(c->ids[i].child_b == j && c->ids[i].child_a == 0, "every point naming child " + std::to_string(j),
+                  "point " + std::to_string(i) + " naming child " + std::to_string(c->ids[i].child_b));
+      }
+      if (!r.v.ok) return;
+      r.note("judged through child " + std::to_string(j));
+      law(ChainCase<T>{s, b, p[j], int(j), x, speculative, c, tol}, r);
+      return;
+    }
+    for (std::size_t j = 0; j < p.size() && r.v.ok; ++j)
+      law(ChainCase<T>{s, b, p[j], int(j), x, speculative, c, tol}, r);
   });
 }
 
@@ -181,6 +231,29 @@ std::optional<double> lowest_in_inner_strip(const Frame& f, const ::collide::det
     }
   }
   return least;
+}
+
+/// A compound's contact is its deepest child's (as contact() picks the deepest child pair): no
+/// child's own contact (the child alone, placed the same way) is deeper, or nearer when neither
+/// sinks in, by more than the tolerance.
+template <Scalar T>
+void no_deeper_child(const ChainCase<T>& k, Judgement& r) {
+  const Contact<T>& c = *k.c;
+  const auto least = [](const Contact<T>& x) {
+    return double(std::min(x.separations[0], x.separations[std::size_t(x.count - 1)]));
+  };
+  for (std::size_t i = 0; i < k.compound()->children().size() && r.v.ok; ++i) {
+    if (int(i) == k.child) continue;
+    const std::optional<Contact<T>> own = contact(k.s, k.only_child(i), k.x, k.speculative);
+    if (!own) continue;
+    const bool deeper = own->depth > T(0) || c.depth > T(0) ? double(own->depth) > double(c.depth) + k.tol
+                                                            : least(*own) < least(c) - k.tol;
+    r.require(!deeper,
+              "the deepest child's contact (child " + std::to_string(k.child) + ", depth " + num(double(c.depth)) +
+                  ", least separation " + num(least(c)) + ")",
+              "child " + std::to_string(i) + " alone deeper: depth " + num(double(own->depth)) + ", least separation " +
+                  num(least(*own)));
+  }
 }
 
 }  // namespace
@@ -233,6 +306,9 @@ Verdict chain_surfaces(const ChainSegment<T>& s, const Shape<T>& b, const Transf
                 at + "with its shape end on the exact shape's boundary", "its end " + point_text(on_shape) + " off it");
       r.require(sep <= double(k.speculative) + k.tol, at + "within the speculative distance", "separation " + num(sep));
     }
+    // A corner contact is contact()'s, whose depth (the shapes' least translation) the pair laws
+    // judge: clipping may leave only shallower points there.
+    if (k.is_two_sided()) return;
     const double depth = least < 0 ? -least : 0;
     r.require(std::fabs(double(c.depth) - depth) <= k.tol, "depth " + num(depth) + ", the least separation's",
               "depth " + num(double(c.depth)));
@@ -251,6 +327,7 @@ Verdict chain_present(const ChainSegment<T>& s, const Shape<T>& b, const Transfo
 template <Scalar T>
 Verdict chain_face_complete(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative) {
   return chain_judged(s, b, xb, speculative, [&](const ChainCase<T>& k, Judgement& r) {
+    if (k.child >= 0 && k.c) no_deeper_child(k, r);
     if (orient(widen(s.a()), widen(s.b()), k.reference_point()) >= 0) return;
     if (!oracle::overlaps(s.as_capsule(), k.exact_shape())) return;
     const Frame f = frame_of(s);
@@ -275,6 +352,11 @@ Verdict chain_face_ids(const ChainSegment<T>& s, const Shape<T>& b, const Transf
     const Contact<T>& c = *k.c;
     const ::collide::detail::Core core = k.stored_core_placed();
     const std::size_t n = core.size();
+    if (std::holds_alternative<Obb<T>>(k.b) && n != 4) {
+      // The stored box's corners rounded onto fewer points; its image's ids may number four.
+      r.note("ids not judged: an obb whose stored corners rounded to " + std::to_string(n) + " points");
+      return;
+    }
     for (std::size_t i = 0; i < std::size_t(c.count) && r.v.ok; ++i) {
       const FeatureId id = c.ids[i];
       const std::string at = "point " + std::to_string(i) + " ";
@@ -286,12 +368,8 @@ Verdict chain_face_ids(const ChainSegment<T>& s, const Shape<T>& b, const Transf
       if (!r.v.ok) return;
       // The shape's surface point lies the core's radius from the sides at the vertex it names.
       const Vec2c x = widen(c.points[i]) + widen(c.normal) * (double(c.separations[i]) / 2);
-      const auto to_side = [&](const Vec2c& p, const Vec2c& q) {
-        const Vec2c d = q - p;
-        const double t = d.squaredNorm() > 0 ? std::clamp((x - p).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-        return (p + d * t - x).norm();
-      };
-      const double near = std::min(to_side(core[v], core[(v + 1) % n]), to_side(core[(v + n - 1) % n], core[v]));
+      const double near = std::min(distance_to_segment(x, {core[v], core[(v + 1) % n]}),
+                                   distance_to_segment(x, {core[(v + n - 1) % n], core[v]}));
       r.require(std::fabs(near - core.radius) <= k.tol,
                 at + "lying the core's radius " + num(core.radius) + " from the sides at vertex " + std::to_string(v),
                 "distance " + num(near));

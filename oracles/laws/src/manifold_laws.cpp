@@ -13,6 +13,7 @@
 namespace collide::laws {
 
 using detail::describe;
+using detail::distance_to_segment;
 using detail::num;
 using detail::vec;
 
@@ -199,13 +200,6 @@ bool feature_shape(const Primitive<T>& p, FeatureKind kind, unsigned index, Feat
   if (n == 1 || (n == 2 && index > 1) || (n >= 3 && index >= n)) return false;
   out.segments = {n == 2 ? std::array<Vec2c, 2>{core[0], core[1]} : edge(index)};
   return true;
-}
-
-double distance_to_segment(const Vec2c& x, const std::array<Vec2c, 2>& s) {
-  const Vec2c d = s[1] - s[0];
-  const double dd = d.squaredNorm();
-  const double t = dd > 0 ? std::clamp((x - s[0]).dot(d) / dd, 0.0, 1.0) : 0.0;
-  return (x - (s[0] + d * t)).norm();
 }
 
 /// The surface points of point i: a's at p - n s / 2, b's at p + n s / 2.

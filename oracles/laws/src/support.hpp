@@ -11,6 +11,7 @@
 #include "collide/oracle/oracle.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -27,6 +28,23 @@ using ::collide::laws::placed_primitives_of;
 using ::collide::laws::primitives_of;
 using ::collide::laws::turn;
 using ::collide::laws::turned;
+
+/// The distance from x to the segment s (a point when its ends are equal). Coordinates whose
+/// squares would underflow or overflow are first scaled by an exact power of two (differences of
+/// subnormal numbers are exact), so that a shape 1e-317 across is measured, not taken for a point.
+inline double distance_to_segment(const Vec2c& x, const std::array<Vec2c, 2>& s) {
+  Vec2c d = s[1] - s[0], w = x - s[0];
+  const double m = std::max(d.cwiseAbs().maxCoeff(), w.cwiseAbs().maxCoeff());
+  int e = 0;
+  if (m > 0 && !::collide::detail::is_plain_magnitude(m)) {
+    static_cast<void>(std::frexp(m, &e));
+    d = Vec2c(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+    w = Vec2c(std::ldexp(w.x(), -e), std::ldexp(w.y(), -e));
+  }
+  const double dd = d.squaredNorm();
+  const double t = dd > 0 ? std::clamp(w.dot(d) / dd, 0.0, 1.0) : 0.0;
+  return std::ldexp((w - d * t).norm(), e);
+}
 
 /// One law's verdict under construction: the first broken requirement is kept, with the inputs.
 struct Judgement {

@@ -324,7 +324,9 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
     if (inc_normals) return inc_normals[j].dot(f.normal);
     if (j < dots.size() && dots[j] != 0) return dots[j];
     const Vec2c e = inc[next_index(j, inc.size())] - inc[j];
-    const Calc dot = Vec2c(e.y(), -e.x()).dot(f.normal) / std::max(e.norm(), Calc(1e-300));
+    // A face whose squared length would underflow or overflow is measured on its unit direction.
+    const Calc dot = is_plain_magnitude(e.cwiseAbs().maxCoeff()) ? Vec2c(e.y(), -e.x()).dot(f.normal) / e.norm()
+                                                                 : -perp(unit_of(e)).dot(f.normal);
     if (j < dots.size()) dots[j] = dot;
     return dot;
   };

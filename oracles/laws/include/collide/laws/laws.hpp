@@ -511,10 +511,12 @@ inline constexpr std::array<double, 8> kToiSamples = {0, 0.125, 0.25, 0.5, 0.75,
 
 // ---------------------------------------------------------------------------------------------
 // Chains (collide/chain.hpp). Each law judges contact(s, b, xb, speculative) of one segment s and
-// a primitive b placed by xb (a compound is not judged here: the verdict fails and says so), on
-// the semantics stated in chain.hpp, against the exact oracle. Lengths are judged within 64 eps_T
-// of the case's scale (the largest coordinate of the segment, its neighbours and b's bounds),
-// directions within 64 eps_T.
+// a shape b placed by xb, on the semantics stated in chain.hpp, against the exact oracle. A
+// compound is judged through its children, each on its own as the library meets it (its image
+// under its own transform and xb): a contact through the child its ids name, no contact through
+// every child. Lengths are judged within 64 eps_T of the case's scale (the largest coordinate of
+// the segment, its neighbours and b's bounds) plus twice transform_tolerance(b, xb), directions
+// within 64 eps_T.
 
 /// Law chain_admissible. The normal is the segment's front normal, or lies inside a corner arc the
 /// segment owns (the turn decided by exact orient()).
@@ -527,8 +529,9 @@ template <Scalar T>
 Verdict chain_one_sided(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
 
 /// Law chain_surfaces. Each point lies midway between the surfaces: point - normal * separation / 2
-/// on the segment and point + normal * separation / 2 on the exact shape's boundary; the depth is
-/// the least separation's penetration; no separation exceeds the speculative distance.
+/// on the segment and point + normal * separation / 2 on the exact shape's boundary; no separation
+/// exceeds the speculative distance; a face contact's depth is the least separation's penetration
+/// (a corner contact's is contact()'s, which the pair laws judge).
 template <Scalar T>
 Verdict chain_surfaces(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
 
@@ -541,7 +544,8 @@ Verdict chain_present(const ChainSegment<T>& s, const Shape<T>& b, const Transfo
 /// in front, and whose core's lowest point within the segment's strip (narrowed by the tolerance
 /// at both ends) lies below the front by more than the tolerance once lowered by the core's
 /// radius, gets a contact; unless it is the two-sided contact of a corner, its least separation
-/// is no higher than that point. The account of a case that makes this claim begins "claimed".
+/// is no higher than that point. A compound's contact is its deepest child's: no child alone gets
+/// a deeper one. The account of a case that makes this claim begins "claimed".
 template <Scalar T>
 Verdict chain_face_complete(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
 
