@@ -103,6 +103,25 @@ TYPED_TEST(Chains, FrontFaceContact) {
   EXPECT_EQ(spec->depth, T(0));
 }
 
+TYPED_TEST(Chains, CompoundAnswersWithItsDeepestChild) {
+  using T = TypeParam;
+  using V = Vec2<T>;
+  const ChainSegment<T> floor(V(3, 0), V(2, 0), V(-2, 0), V(-3, 0));
+  // Two boxes of one compound over the floor, the second sunk deeper: its contact, naming it, in
+  // either order of the children. A contact of the shallower box would let the deeper sink on.
+  const Aabb<T> shallow(V(-1, T(-0.125)), V(0, 1)), deep(V(T(0.5), T(-0.375)), V(T(1.5), 1));
+  for (const bool deep_first : {false, true}) {
+    std::vector<Primitive<T>> kids;
+    kids.emplace_back(deep_first ? deep : shallow);
+    kids.emplace_back(deep_first ? shallow : deep);
+    const auto c = contact(floor, Shape<T>(Compound<T>(std::move(kids))));
+    ASSERT_TRUE(c);
+    EXPECT_TRUE(is_up(c->normal));
+    EXPECT_NEAR(double(c->depth), 0.375, 1e-6) << "deep box first: " << deep_first;
+    for (int i = 0; i < c->count; ++i) EXPECT_EQ(c->ids[std::size_t(i)].child_b, deep_first ? 0 : 1);
+  }
+}
+
 TYPED_TEST(Chains, CapsuleMeetsTheFrontWithItsSide) {
   using T = TypeParam;
   using V = Vec2<T>;

@@ -289,10 +289,11 @@ inline void reach_lowest_vertex(IncidentFace& incident, const SegmentFrame& f, c
 ///   if nothing is left: the core's lowest point in the strip (a polygon's side beyond the strip)
 ///   keep the points within reach, midway between the surfaces
 ///   empty when no point is kept
-inline std::optional<CoreContact> face_contact_at_scale(const Core& segment, const Core& shape, Calc speculative) {
+inline std::optional<CoreContact> face_contact_at_scale(const Core& segment, const Core& shape, Calc speculative,
+                                                        const Vec2c* normals) {
   const SegmentFrame f = segment_frame(segment[0], segment[1]);
   const ReferenceFace face{&segment, &shape, segment[0], segment[1], f.n, 0, 0};
-  IncidentFace incident = find_incident_face(face);
+  IncidentFace incident = find_incident_face(face, normals);
   reach_lowest_vertex(incident, f, shape);
   const bool met = incident.count == 1 ? f.in_strip(incident.ends[0]) : clip_to_reference_face(incident, face);
   if (!met) incident = lowest_in_strip(f, shape);
@@ -308,14 +309,16 @@ inline std::optional<CoreContact> face_contact_at_scale(const Core& segment, con
 
 /// face_contact_at_scale() of the segment from a to b, after exact rescaling of tiny cores (as
 /// contact_cores() rescales them: products of subnormal coordinates would lose their bits).
-inline std::optional<CoreContact> face_contact(const Vec2c& a, const Vec2c& b, const Core& shape, Calc speculative) {
+/// normals: the shape's unit face normals when cached (a polygon's), else nullptr.
+inline std::optional<CoreContact> face_contact(const Vec2c& a, const Vec2c& b, const Core& shape, Calc speculative,
+                                               const Vec2c* normals = nullptr) {
   Core segment;
   segment.push(a);
   segment.push(b);
   const int k = tiny_scale(segment, shape);
-  if (k == 0) return face_contact_at_scale(segment, shape, speculative);
+  if (k == 0) return face_contact_at_scale(segment, shape, speculative, normals);
   std::optional<CoreContact> c =
-      face_contact_at_scale(scaled(segment, k), scaled(shape, k), std::ldexp(speculative, k));
+      face_contact_at_scale(scaled(segment, k), scaled(shape, k), std::ldexp(speculative, k), normals);
   if (c) *c = unscaled(*c, k);
   return c;
 }
@@ -354,6 +357,8 @@ std::optional<CoreContact> chain_contact_primitive(const ChainSegment<T>& s, con
   if (in_own_corner(s, f, two_sided->normal)) return two_sided;
   if constexpr (std::is_same_v<B, Circle<scalar_of_t<B>>>) {
     return circle_face_contact(f, e, widen(b.center()), Calc(b.radius()), speculative);
+  } else if constexpr (std::is_same_v<B, ConvexPolygon<scalar_of_t<B>>>) {
+    return face_contact(a, e, core_of(b), speculative, PolygonAccess::normals(b));  // not computed again
   } else {
     return face_contact(a, e, core_of(b), speculative);
   }
