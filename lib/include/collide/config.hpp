@@ -103,10 +103,12 @@ inline constexpr Calc kSweepWidthSlack = 0x1p-40;
 /// less than this are equally anti-parallel (a polygon side split by a vertex one ulp off its line).
 inline constexpr Calc kFaceTieTolerance = 0x1p-40;
 
-/// Contact generation: an incident face more than this many times the squared length of the
-/// reference face is not clipped against it (its clipped ends would move by more than the
-/// reference face is long); the witness point is used instead.
-inline constexpr Calc kClipLengthRatio = 0x1p40;
+/// Contact generation: an incident face more than this many times as long as the reference face
+/// is not clipped against it (its clipped ends would move by more than the reference face is
+/// long); the witness point is used instead.
+inline constexpr Calc kClipLengthRatioRoot = 0x1p20;
+/// kClipLengthRatioRoot squared, compared with the faces' squared lengths.
+inline constexpr Calc kClipLengthRatio = kClipLengthRatioRoot * kClipLengthRatioRoot;
 
 /// Contact generation: a face replaces an earlier one as the face of least penetration only when
 /// shallower by more than this many units of roundoff of the pair's scale (a quarter of

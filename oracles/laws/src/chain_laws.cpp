@@ -330,6 +330,10 @@ Verdict chain_face_complete(const ChainSegment<T>& s, const Shape<T>& b, const T
     if (k.child >= 0 && k.c) no_deeper_child(k, r);
     if (orient(widen(s.a()), widen(s.b()), k.reference_point()) >= 0) return;
     if (!oracle::overlaps(s.as_capsule(), k.exact_shape())) return;
+    // A placed shape overlapping by no more than its image's error may be met or missed
+    // (overlaps() is exact outside that band only: transformed.hpp).
+    const double band = double(transform_tolerance(k.whole, k.x));
+    if (band > 0 && oracle::within_band(s.as_capsule(), k.exact_shape(), band)) return;
     const Frame f = frame_of(s);
     const ::collide::detail::Core core = k.met_core();
     const std::optional<double> h = lowest_in_inner_strip(f, core, k.tol);
@@ -352,9 +356,11 @@ Verdict chain_face_ids(const ChainSegment<T>& s, const Shape<T>& b, const Transf
     const Contact<T>& c = *k.c;
     const ::collide::detail::Core core = k.stored_core_placed();
     const std::size_t n = core.size();
-    if (std::holds_alternative<Obb<T>>(k.b) && n != 4) {
-      // The stored box's corners rounded onto fewer points; its image's ids may number four.
-      r.note("ids not judged: an obb whose stored corners rounded to " + std::to_string(n) + " points");
+    if (const std::size_t met = k.met_core().size(); met != n) {
+      // A shape thinner than its rounding: the stored corners or the image's rounded onto fewer
+      // points, and the ids follow the one the contact met (as the placed pair laws skip it).
+      r.note("ids not judged: the stored core has " + std::to_string(n) + " points, the one met " +
+             std::to_string(met));
       return;
     }
     for (std::size_t i = 0; i < std::size_t(c.count) && r.v.ok; ++i) {

@@ -383,7 +383,11 @@ inline bool clip_to_reference_face(IncidentFace& face, const ReferenceFace& f) {
   std::array<Vec2c, 2>& ip = face.ends;
   const Calc inc_len2 = face.count == 2 ? (ip[1] - ip[0]).squaredNorm() : 0;
   if (inc_len2 > kClipLengthRatio * len2) return false;
-  if (face.count != 2 || !(len2 > 0)) return true;
+  const Calc extent = span.cwiseAbs().maxCoeff();
+  if (!(len2 >= kPlainNormLow * kPlainNormLow) && extent > 0 && face.count == 2 &&
+      norm_of(ip[1] - ip[0]) > kClipLengthRatioRoot * norm_of(span))
+    return false;  // squares that underflowed compare nothing: the lengths do
+  if (face.count != 2 || !(extent > 0)) return true;
   const Vec2c tangent(-f.normal.y(), f.normal.x());
   const Calc end = span.dot(tangent);
   for (int side = 0; side < 2; ++side) {

@@ -540,7 +540,8 @@ Verdict chain_surfaces(const ChainSegment<T>& s, const Shape<T>& b, const Transf
 template <Scalar T>
 Verdict chain_present(const ChainSegment<T>& s, const Shape<T>& b, const Transform<T>& xb, T speculative);
 
-/// Law chain_face_complete. A shape that overlaps the segment (exact), whose reference point lies
+/// Law chain_face_complete. A shape that overlaps the segment (exact; a placed shape by more than
+/// its transform_tolerance(), within which overlaps() may go either way), whose reference point lies
 /// in front, and whose core's lowest point within the segment's strip (narrowed by the tolerance
 /// at both ends) lies below the front by more than the tolerance once lowered by the core's
 /// radius, gets a contact; unless it is the two-sided contact of a corner, its least separation
