@@ -271,9 +271,7 @@ inline void reach_lowest_vertex(IncidentFace& incident, const SegmentFrame& f, c
   }
   if (k == j || k == j1) return;
   const std::size_t before = prev(k);
-  const auto alignment = [&](std::size_t from) {  // the lower, the more anti-parallel
-    return -perp(unit_of(c[next_index(from, n)] - c[from])).dot(f.n);
-  };
+  const auto alignment = [&](std::size_t from) { return face_alignment(c[next_index(from, n)] - c[from], f.n); };
   incident = incident_edge(c, alignment(before) < alignment(k) ? before : k);
 }
 

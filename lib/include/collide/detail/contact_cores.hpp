@@ -311,6 +311,14 @@ inline IncidentFace incident_edge(const Core& inc, std::size_t j) noexcept {
   return {{inc[j], inc[after]}, {unsigned(j), unsigned(after)}, 2};
 }
 
+/// The dot product of normal with the outward unit normal of a counter-clockwise core's face
+/// along e: the lower, the more anti-parallel. A face whose squared length would underflow or
+/// overflow is measured on its unit direction.
+inline Calc face_alignment(const Vec2c& e, const Vec2c& normal) noexcept {
+  return is_plain_magnitude(e.cwiseAbs().maxCoeff()) ? Vec2c(e.y(), -e.x()).dot(normal) / e.norm()
+                                                     : -perp(unit_of(e)).dot(normal);
+}
+
 /// Step 3: the incident core's face most anti-parallel to the reference normal. Among faces as
 /// anti-parallel as the best up to rounding (a polygon side split by a vertex one ulp off the
 /// line), the one that spans most of the reference face: the other may lie beside it entirely,
@@ -323,10 +331,7 @@ inline IncidentFace find_incident_face(const ReferenceFace& f, const Vec2c* inc_
   auto anti_parallel = [&](std::size_t j) {
     if (inc_normals) return inc_normals[j].dot(f.normal);
     if (j < dots.size() && dots[j] != 0) return dots[j];
-    const Vec2c e = inc[next_index(j, inc.size())] - inc[j];
-    // A face whose squared length would underflow or overflow is measured on its unit direction.
-    const Calc dot = is_plain_magnitude(e.cwiseAbs().maxCoeff()) ? Vec2c(e.y(), -e.x()).dot(f.normal) / e.norm()
-                                                                 : -perp(unit_of(e)).dot(f.normal);
+    const Calc dot = face_alignment(inc[next_index(j, inc.size())] - inc[j], f.normal);
     if (j < dots.size()) dots[j] = dot;
     return dot;
   };
